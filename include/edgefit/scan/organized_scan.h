@@ -1,0 +1,110 @@
+// OrganizedScan: one terrestrial laser scan as a rows x cols grid.
+//
+// Rows index elevation, columns index azimuth (paper Sec. 4.1, P[i][j]).
+// Cells are stored column by column, as PTX writes them:
+//   cell index = col * rows + row.
+// Points are kept in the scanner frame as float (12 bytes) with T_world_scanner
+// in double, so a cell costs 12 (xyz) + 4 (intensity) + 3 (optional RGB) bytes:
+// 19 bytes at most, under the 40 bytes per cell budget. A missing cell (no
+// return) has NaN coordinates.
+#ifndef EDGEFIT_SCAN_ORGANIZED_SCAN_H_
+#define EDGEFIT_SCAN_ORGANIZED_SCAN_H_
+
+#include <Eigen/Core>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/scan/angular_lattice.h"
+
+namespace edgefit {
+
+class OrganizedScan {
+ public:
+  // How the file that held the scan ordered its cells; kept so that per-cell
+  // outputs (edge weights, labels) can be written "in the file's point order".
+  enum class FileOrder {
+    kColumnMajor,  // PTX: column by column (cell index order)
+    kRowMajor,     // organized PCD: row by row
+  };
+
+  OrganizedScan() = default;
+  // A grid of rows x cols missing cells, no intensity, identity pose.
+  OrganizedScan(int rows, int cols);
+
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  size_t size() const { return points_.size(); }
+  size_t Index(int row, int col) const {
+    return static_cast<size_t>(col) * static_cast<size_t>(rows_) + static_cast<size_t>(row);
+  }
+  int RowOf(size_t index) const { return static_cast<int>(index % static_cast<size_t>(rows_)); }
+  int ColOf(size_t index) const { return static_cast<int>(index / static_cast<size_t>(rows_)); }
+
+  // An unorganized cloud (PLY) is held as 1 x N with organized() == false and
+  // no lattice; grid neighbourhoods mean nothing for it.
+  bool organized() const { return organized_; }
+  void set_organized(bool organized) { organized_ = organized; }
+
+  bool IsValid(size_t i) const { return !std::isnan(points_[i].x()); }
+  // Point in the scanner frame [m]; NaN for a missing cell.
+  const Eigen::Vector3f& point_scanner(size_t i) const { return points_[i]; }
+  Eigen::Vector3d PointWorld(size_t i) const {
+    return T_world_scanner_ * points_[i].cast<double>();
+  }
+  float intensity(size_t i) const { return intensity_[i]; }
+  bool has_color() const { return !colors_.empty(); }
+  // RGB of cell i; only when has_color().
+  const std::array<uint8_t, 3>& color(size_t i) const { return colors_[i]; }
+
+  void SetPoint(size_t i, const Eigen::Vector3f& p_scanner, float intensity) {
+    points_[i] = p_scanner;
+    intensity_[i] = intensity;
+  }
+  void SetMissing(size_t i);
+  void SetColor(size_t i, const std::array<uint8_t, 3>& rgb);  // allocates colors on first use
+
+  const Pose& T_world_scanner() const { return T_world_scanner_; }
+  void set_T_world_scanner(const Pose& T) { T_world_scanner_ = T; }
+
+  FileOrder file_order() const { return file_order_; }
+  void set_file_order(FileOrder order) { file_order_ = order; }
+  // Position of cell `i` in the file's point order.
+  size_t FileIndex(size_t i) const;
+
+  // The angular lattice; valid only after EstimateLattice (lattice.h) or set_lattice.
+  const AngularLattice& lattice() const { return lattice_; }
+  void set_lattice(AngularLattice lattice) { lattice_ = std::move(lattice); }
+
+  size_t CountValid() const;
+  // Bytes held per grid cell (memory budget check).
+  double BytesPerCell() const;
+
+ private:
+  int rows_ = 0;
+  int cols_ = 0;
+  bool organized_ = true;
+  std::vector<Eigen::Vector3f> points_;
+  std::vector<float> intensity_;
+  std::vector<std::array<uint8_t, 3>> colors_;
+  Pose T_world_scanner_ = Pose::Identity();
+  FileOrder file_order_ = FileOrder::kColumnMajor;
+  AngularLattice lattice_;
+};
+
+// A set of scans of one scene, in file order (DESIGN.md: ScanSet).
+struct ScanSet {
+  std::vector<OrganizedScan> scans;
+  std::vector<std::string> sources;  // file each scan came from
+
+  size_t TotalCells() const;
+  size_t TotalValid() const;
+};
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SCAN_ORGANIZED_SCAN_H_

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs edgefit's build and test dependencies from Debian 12's packages.
+# Idempotent: installs only what is missing. Needs root (or sudo) for apt-get.
+#   ./scripts/install-deps.sh            build + test dependencies
+#   EDGEFIT_WITH_CLOUDCOMPARE=0 ...      skip CloudCompare (used by one interop test)
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config
+  libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
+  liburdfdom-dev liburdfdom-headers-dev libassimp-dev libnanoflann-dev
+  libomp-dev libembree-dev nlohmann-json3-dev libfast-float-dev libtinyxml2-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+if [[ "${EDGEFIT_WITH_CLOUDCOMPARE:-1}" == "1" ]]; then
+  packages+=(cloudcompare xvfb)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+if [[ "$(id -u)" != "0" ]]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 2; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,58 @@
+#include "edgefit/core/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace edgefit {
+
+Status WriteFileAtomically(const std::string& path,
+                           const std::function<Status(std::ostream&)>& write) {
+  const std::string tmp_path = path + ".tmp." + std::to_string(::getpid());
+  Status status;
+  {
+    std::ofstream out(tmp_path, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      return Status::Error(path + ": cannot open for writing: " + std::strerror(errno));
+    }
+    status = write(out);
+    out.flush();
+    if (status.ok() && !out) status = Status::Error(path + ": write failed (disk full?)");
+  }
+  if (!status.ok()) {
+    std::remove(tmp_path.c_str());
+    return status;
+  }
+  if (std::rename(tmp_path.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(tmp_path.c_str());
+    return Status::Error(path + ": cannot move the finished file into place: " + reason);
+  }
+  return Status::Ok();
+}
+
+Status WriteStringAtomically(const std::string& path, const std::string& content) {
+  return WriteFileAtomically(path, [&content](std::ostream& out) {
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    return Status::Ok();
+  });
+}
+
+Status ReadFileToString(const std::string& path, std::string* content) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::Error(path + ": cannot open: " + std::strerror(errno));
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) return Status::Error(path + ": cannot read (not a regular file?)");
+  content->resize(static_cast<size_t>(size));
+  in.seekg(0, std::ios::beg);
+  in.read(content->data(), size);
+  if (!in) return Status::Error(path + ": read failed");
+  return Status::Ok();
+}
+
+}  // namespace edgefit
