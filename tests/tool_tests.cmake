@@ -1,0 +1,15 @@
+if(TARGET edgefit)
+  edgefit_add_test(cli_test SOURCES tools/cli_test.cc
+                   LIBS nlohmann_json::nlohmann_json)
+  target_compile_definitions(cli_test PRIVATE EDGEFIT_BINARY="$<TARGET_FILE:edgefit>")
+  add_dependencies(cli_test edgefit)
+endif()
+
+# cmake --install gives a package that a small consumer project builds against.
+add_test(NAME install_consumer_test
+         COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR}
+                 -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
+                 -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/install_consumer
+                 -DGENERATOR=${CMAKE_GENERATOR}
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/install/run_consumer_test.cmake)
+set_tests_properties(install_consumer_test PROPERTIES TIMEOUT 600)

@@ -1,0 +1,202 @@
+// The edgefit command's contract (DESIGN.md): exit 0 on success, 2 on bad
+// input with exactly one line on stderr that names the file and the problem.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code = -1;
+  bool signaled = false;
+  std::string out;
+  std::string err;
+};
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("edgefit_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Write(const std::string& name, const std::string& content) {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path, std::ios::binary) << content;
+    return path;
+  }
+
+  RunResult Run(const std::string& args) {
+    const std::string out = (dir_ / "stdout.txt").string();
+    const std::string err = (dir_ / "stderr.txt").string();
+    const std::string cmd = std::string(EDGEFIT_BINARY) + " " + args + " >" + out + " 2>" + err;
+    const int status = std::system(cmd.c_str());
+    RunResult r;
+    r.signaled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) > 128);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = Slurp(out);
+    r.err = Slurp(err);
+    return r;
+  }
+
+  // Bad input: exit 2, nothing on stdout, one stderr line containing `needle`.
+  void ExpectBadInput(const std::string& args, const std::string& needle) {
+    const RunResult r = Run(args);
+    EXPECT_FALSE(r.signaled) << args;
+    EXPECT_EQ(r.exit_code, 2) << args << "\nstderr: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\nstderr: " << r.err;
+    EXPECT_NE(r.err.find(needle), std::string::npos)
+        << args << "\nexpected '" << needle << "' in: " << r.err;
+    EXPECT_TRUE(r.out.empty()) << args << "\nstdout: " << r.out;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CliTest, HelpListsCommands) {
+  const RunResult r = Run("help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("info"), std::string::npos);
+  const RunResult h = Run("info --help");
+  EXPECT_EQ(h.exit_code, 0);
+  EXPECT_NE(h.out.find("--scan"), std::string::npos);
+  EXPECT_NE(h.out.find("--urdf"), std::string::npos);
+}
+
+TEST_F(CliTest, UsageErrorsAreBadInput) {
+  ExpectBadInput("frobnicate", "unknown command 'frobnicate'");
+  ExpectBadInput("info --scan=x.ptx --w_high=3", "unknown flag --w_high");
+  ExpectBadInput("info --json=maybe --scan=x.ptx", "--json");
+  ExpectBadInput("info", "exactly one of --scan or --urdf");
+  ExpectBadInput("info --scan", "--scan needs a value");
+}
+
+TEST_F(CliTest, MissingScanFile) {
+  ExpectBadInput("info --scan=" + (dir_ / "nope.ptx").string(), "nope.ptx");
+}
+
+TEST_F(CliTest, UnknownScanExtension) {
+  const std::string path = Write("scan.xyz", "1 2 3\n");
+  ExpectBadInput("info --scan=" + path, "scan.xyz");
+}
+
+TEST_F(CliTest, EmptyScanFile) { ExpectBadInput("info --scan=" + Write("empty.ptx", ""), "empty.ptx"); }
+
+constexpr char kPtxHeader[] =
+    "2\n2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+
+TEST_F(CliTest, MalformedPtx) {
+  const std::string path = Write("bad.ptx", std::string(kPtxHeader) +
+                                                "1 0 0 0.5\n1 0.01 0 0.5\n1 abc 0 0.5\n"
+                                                "1 0.01 0.01 0.5\n");
+  ExpectBadInput("info --scan=" + path, "bad.ptx");
+}
+
+TEST_F(CliTest, TruncatedPtx) {
+  const std::string path = Write("trunc.ptx", std::string(kPtxHeader) + "1 0 0 0.5\n1 0.01 0 0.5\n");
+  ExpectBadInput("info --scan=" + path, "trunc.ptx");
+}
+
+TEST_F(CliTest, NanInPtx) {
+  const std::string path = Write("nan.ptx", std::string(kPtxHeader) +
+                                                "1 0 0 0.5\nnan 0.01 0 0.5\n1 0 0.01 0.5\n"
+                                                "1 0.01 0.01 0.5\n");
+  ExpectBadInput("info --scan=" + path, "nan.ptx");
+}
+
+TEST_F(CliTest, MalformedPcd) {
+  const std::string path =
+      Write("bad.pcd", "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
+                       "COUNT 1 1 1\nWIDTH 2\nHEIGHT 2\nPOINTS 4\nDATA ascii\n1 2 3\n4 5\n");
+  ExpectBadInput("info --scan=" + path, "bad.pcd");
+}
+
+TEST_F(CliTest, MalformedPly) {
+  const std::string path = Write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
+                                            "property float x\nproperty float y\n"
+                                            "property float z\nend_header\n1 2 3\n4 5 6\n");
+  ExpectBadInput("info --scan=" + path, "bad.ply");
+}
+
+TEST_F(CliTest, UrdfThatDoesNotParse) {
+  const std::string path = Write("broken.urdf", "<robot name='r'><link name='a'></robot");
+  ExpectBadInput("info --urdf=" + path, "broken.urdf");
+}
+
+TEST_F(CliTest, MissingMeshNamesThePathsTried) {
+  const std::string path = Write(
+      "nomesh.urdf",
+      "<robot name='r'><link name='a'><visual><geometry><mesh filename='meshes/gone.stl'/>"
+      "</geometry></visual></link></robot>");
+  ExpectBadInput("info --urdf=" + path, "gone.stl");
+}
+
+TEST_F(CliTest, UnknownJointType) {
+  const std::string path = Write(
+      "joint.urdf",
+      "<robot name='r'><link name='a'/><link name='b'/><joint name='j' type='spherical'>"
+      "<parent link='a'/><child link='b'/></joint></robot>");
+  ExpectBadInput("info --urdf=" + path, "spherical");
+}
+
+TEST_F(CliTest, AttachToUnknownLink) {
+  const std::string model = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
+  ExpectBadInput("info --urdf=" + model + " --attach=" + model + "@no_such_link", "no_such_link");
+}
+
+TEST_F(CliTest, ScanInfoJson) {
+  const std::string sample = std::string(EDGEFIT_SOURCE_DIR) + "/assets/samples/two_scans.ptx";
+  const RunResult r = Run("info --json --scan=" + sample);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["scans"].size(), 2u);
+  size_t valid = 0;
+  for (const auto& s : j["scans"]) {
+    EXPECT_GT(s["rows"].get<int>(), 10);
+    EXPECT_GT(s["cols"].get<int>(), 10);
+    EXPECT_GT(s["valid"].get<size_t>(), 0u);
+    EXPECT_LE(s["valid"].get<int>(), s["rows"].get<int>() * s["cols"].get<int>());
+    ASSERT_FALSE(s["lattice"].is_null());
+    EXPECT_GT(std::abs(s["lattice"]["azimuth_step_deg"].get<double>()), 0.0);
+    EXPECT_GT(std::abs(s["lattice"]["elevation_step_deg"].get<double>()), 0.0);
+    valid += s["valid"].get<size_t>();
+  }
+  EXPECT_EQ(j["total_valid"].get<size_t>(), valid);
+}
+
+TEST_F(CliTest, ModelInfoJson) {
+  const std::string model = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
+  const RunResult r = Run("info --json --urdf=" + model);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["links"].size(), 2u);
+  ASSERT_GT(j["joints"].size(), 1u);
+  for (const auto& joint : j["joints"]) {
+    EXPECT_TRUE(joint.contains("name"));
+    EXPECT_TRUE(joint.contains("type"));
+    EXPECT_TRUE(joint.contains("lower"));
+    EXPECT_TRUE(joint.contains("upper"));
+  }
+  EXPECT_FALSE(j["zero_pose_bbox"].is_null());
+}
+
+}  // namespace

@@ -1,0 +1,129 @@
+#include "command_line.h"
+
+#include <gflags/gflags.h>
+
+#include <cstdio>
+#include <iostream>
+
+namespace edgefit::tools {
+namespace {
+
+// Flags every command accepts (gflags' own and glog's).
+bool IsGlobalFlag(const std::string& name) {
+  static const char* kGlobal[] = {"help", "helpfull", "helpshort", "version", "v",
+                                  "logtostderr", "alsologtostderr", "minloglevel",
+                                  "stderrthreshold", "vmodule", "flagfile", "fromenv"};
+  for (const char* g : kGlobal) {
+    if (name == g) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+int BadInput(const Command& command, const std::string& message) {
+  std::cerr << "edgefit " << command.name << ": error: " << message << std::endl;
+  return kExitBadInput;
+}
+
+int BadInput(const Command& command, const Status& status) {
+  return BadInput(command, status.message());
+}
+
+Status ParseFlags(const Command& command, int argc, char** argv) {
+  auto reads = [&command](const std::string& flag) {
+    if (IsGlobalFlag(flag)) return true;
+    for (const std::string& f : command.flags) {
+      if (f == flag) return true;
+    }
+    return false;
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.size() < 2 || arg[0] != '-') {
+      return Status::Error("unexpected argument '" + arg + "' (flags take the form --name=value)");
+    }
+    const std::string body = arg.substr(arg[1] == '-' ? 2 : 1);
+    const size_t eq = body.find('=');
+    std::string name = body.substr(0, eq);
+    std::string value;
+    bool has_value = eq != std::string::npos;
+    if (has_value) value = body.substr(eq + 1);
+    // "--nojson" negates the boolean flag "json".
+    if (!reads(name) && name.rfind("no", 0) == 0 && reads(name.substr(2)) && !has_value) {
+      name = name.substr(2);
+      value = "false";
+      has_value = true;
+    }
+    google::CommandLineFlagInfo info;
+    if (!reads(name) || !google::GetCommandLineFlagInfo(name.c_str(), &info)) {
+      return Status::Error("unknown flag --" + name + " (see: edgefit " + command.name +
+                           " --help)");
+    }
+    if (!has_value) {
+      if (info.type == "bool") {
+        value = "true";
+      } else if (i + 1 < argc) {
+        value = argv[++i];  // "--name value"
+      } else {
+        return Status::Error("flag --" + name + " needs a value");
+      }
+    }
+    if (google::SetCommandLineOption(name.c_str(), value.c_str()).empty()) {
+      return Status::Error("flag --" + name + ": '" + value + "' is not a valid " + info.type);
+    }
+  }
+  return Status::Ok();
+}
+
+void PrintCommandHelp(const Command& command) {
+  std::cout << "edgefit " << command.name << ": " << command.summary << "\n\n"
+            << command.usage << "\n\nFlags:\n";
+  for (const std::string& name : command.flags) {
+    google::CommandLineFlagInfo info;
+    if (!google::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
+    std::cout << "  --" << info.name << " (" << info.type << ", default \""
+              << info.default_value << "\")\n      " << info.description << "\n";
+  }
+}
+
+void PrintOverview() {
+  std::cout << "edgefit: fit kinematic CAD models (URDF) to terrestrial laser scans.\n\n"
+               "Usage: edgefit <command> [--flags]\n\nCommands:\n";
+  for (const Command& c : AllCommands()) {
+    std::printf("  %-8s %s\n", c.name, c.summary);
+  }
+  std::cout << "  help     this overview\n\n"
+               "`edgefit <command> --help` lists a command's flags.\n"
+               "Exit codes: 0 success, 2 bad input (one line on stderr says what and where),\n"
+               "1 internal failure.\n";
+}
+
+std::vector<std::string> SplitAttachList(const std::string& list) {
+  std::vector<std::string> specs;
+  for (const std::string& token : SplitList(list)) {
+    // A token with '@' starts a spec; the others continue its origin "x,y,z,r,p,y".
+    if (token.find('@') != std::string::npos || specs.empty()) {
+      specs.push_back(token);
+    } else {
+      specs.back() += "," + token;
+    }
+  }
+  return specs;
+}
+
+std::vector<std::string> SplitList(const std::string& list) {
+  std::vector<std::string> items;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t end = list.find(',', start);
+    const std::string item =
+        list.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (!item.empty()) items.push_back(item);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return items;
+}
+
+}  // namespace edgefit::tools

@@ -1,0 +1,52 @@
+// The edgefit command's subcommand table, flag validation and exit codes
+// (DESIGN.md, command-line contract): 0 success, 2 bad input with one clear
+// line on stderr, 1 internal failure.
+#ifndef EDGEFIT_TOOLS_COMMAND_LINE_H_
+#define EDGEFIT_TOOLS_COMMAND_LINE_H_
+
+#include <string>
+#include <vector>
+
+#include "edgefit/core/status.h"
+
+namespace edgefit::tools {
+
+constexpr int kExitOk = 0;
+constexpr int kExitInternal = 1;
+constexpr int kExitBadInput = 2;
+
+struct Command {
+  const char* name;
+  const char* summary;  // one line for `edgefit help`
+  const char* usage;    // synopsis and examples for `edgefit <cmd> --help`
+  std::vector<std::string> flags;  // the gflags this command reads
+  int (*run)(const Command& self);  // runs after the flags are parsed
+};
+
+// Every subcommand; defined next to main().
+const std::vector<Command>& AllCommands();
+
+// Prints "edgefit <cmd>: error: <message>" as one line on stderr and returns
+// kExitBadInput.
+int BadInput(const Command& command, const std::string& message);
+int BadInput(const Command& command, const Status& status);
+
+// Sets the flags in argv[1..argc) ("--name=value", "--name value", "--bool",
+// "--nobool"). Fails, without exiting, on a flag `command` does not read, a
+// missing value or a value of the wrong type; the message names the flag.
+Status ParseFlags(const Command& command, int argc, char** argv);
+
+// `edgefit <cmd> --help`.
+void PrintCommandHelp(const Command& command);
+// `edgefit help`.
+void PrintOverview();
+
+// Splits "a,b,,c" into {"a", "b", "c"}.
+std::vector<std::string> SplitList(const std::string& list);
+// Splits an --attach list into specs: "g.urdf@tool0:0,0,0.1,0,0,0,h.urdf@l3" gives
+// {"g.urdf@tool0:0,0,0.1,0,0,0", "h.urdf@l3"} (commas inside an origin stay).
+std::vector<std::string> SplitAttachList(const std::string& list);
+
+}  // namespace edgefit::tools
+
+#endif  // EDGEFIT_TOOLS_COMMAND_LINE_H_

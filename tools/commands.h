@@ -1,0 +1,14 @@
+// The subcommands, each defined in its own <name>_command.cc with its flags
+// at the top of the file.
+#ifndef EDGEFIT_TOOLS_COMMANDS_H_
+#define EDGEFIT_TOOLS_COMMANDS_H_
+
+#include "command_line.h"
+
+namespace edgefit::tools {
+
+Command InfoCommand();
+
+}  // namespace edgefit::tools
+
+#endif  // EDGEFIT_TOOLS_COMMANDS_H_

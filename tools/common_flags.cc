@@ -1,0 +1,9 @@
+#include "common_flags.h"
+
+DEFINE_string(scan, "", "Scan file(s): .ptx, .pcd or .ply; several as a comma list.");
+DEFINE_string(urdf, "", "URDF of the equipment (meshes resolved relative to it or via package://).");
+DEFINE_string(attach, "",
+              "End effectors to attach: FILE.urdf@PARENT_LINK[:x,y,z,roll,pitch,yaw] "
+              "(origin in metres and radians), several as a comma list.");
+DEFINE_bool(json, false, "Print one JSON object on stdout instead of text.");
+DEFINE_int32(threads, 0, "Worker threads (0 = all cores). Results do not depend on it.");

@@ -1,0 +1,14 @@
+// Flags shared by several subcommands (gflags flags are global, so each is
+// defined once, in common_flags.cc).
+#ifndef EDGEFIT_TOOLS_COMMON_FLAGS_H_
+#define EDGEFIT_TOOLS_COMMON_FLAGS_H_
+
+#include <gflags/gflags.h>
+
+DECLARE_string(scan);
+DECLARE_string(urdf);
+DECLARE_string(attach);
+DECLARE_bool(json);
+DECLARE_int32(threads);
+
+#endif  // EDGEFIT_TOOLS_COMMON_FLAGS_H_
