@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -197,6 +198,29 @@ TEST_F(CliTest, ModelInfoJson) {
     EXPECT_TRUE(joint.contains("upper"));
   }
   EXPECT_FALSE(j["zero_pose_bbox"].is_null());
+}
+
+TEST_F(CliTest, RealRobotWithAttachedWeldGun) {
+  const std::string robots = std::string(EDGEFIT_SHARED_DIR) + "/robots";
+  const std::string kuka = robots + "/kuka_kr150r3100_2/kuka_kr150r3100_2.urdf";
+  const std::string gun = robots + "/weld_gun_x16005_botrail/weld_gun_x16005_botrail.urdf";
+  if (!fs::exists(kuka) || !fs::exists(gun)) GTEST_SKIP() << "no ../shared/robots";
+  const RunResult r = Run("info --json --urdf=" + kuka + " --attach=" + gun + "@tool0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  std::set<std::string> names;
+  for (const auto& link : j["links"]) names.insert(link["name"].get<std::string>());
+  EXPECT_TRUE(names.count("link_6"));
+  EXPECT_TRUE(names.count("electrode_arm"));
+  EXPECT_TRUE(names.count("tcp"));
+  int revolute = 0;
+  for (const auto& joint : j["joints"]) revolute += joint["type"] == "revolute";
+  EXPECT_EQ(revolute, 7);  // six robot axes and the gun's electrode arm
+  // The gun adds about 1 m of reach beyond the flange.
+  const nlohmann::json alone = nlohmann::json::parse(Run("info --json --urdf=" + kuka).out);
+  const double reach_with = j["zero_pose_bbox"]["max"][0].get<double>();
+  const double reach_alone = alone["zero_pose_bbox"]["max"][0].get<double>();
+  EXPECT_GT(reach_with, reach_alone + 0.2);
 }
 
 }  // namespace
