@@ -21,8 +21,12 @@ void OrganizedScan::SetMissing(size_t i) {
   intensity_[i] = 0.0f;
 }
 
-void OrganizedScan::SetColor(size_t i, const std::array<uint8_t, 3>& rgb) {
+void OrganizedScan::EnableColor() {
   if (colors_.empty()) colors_.assign(points_.size(), {0, 0, 0});
+}
+
+void OrganizedScan::SetColor(size_t i, const std::array<uint8_t, 3>& rgb) {
+  EnableColor();
   colors_[i] = rgb;
 }
 

@@ -36,6 +36,9 @@ class AngularLattice {
   double elevation_step() const { return elevation_step_; }
   double azimuth_step() const { return azimuth_step_; }
   const Eigen::Matrix3d& R_scanner_lattice() const { return R_scanner_lattice_; }
+  // True when the columns close the full circle (|cols * azimuth_step| ~ 2 pi):
+  // then column cols-1 neighbours column 0 and projection wraps around.
+  bool full_circle() const { return full_circle_; }
 
   // Fractional (row, col) of a point in the scanner frame; false when it falls
   // outside the grid (by more than half a step) or at the scanner origin. O(1).
@@ -44,6 +47,9 @@ class AngularLattice {
   bool ProjectToCell(const Eigen::Vector3d& p_scanner, int* row, int* col) const;
   // Unit ray direction of cell (row, col) in the scanner frame.
   Eigen::Vector3d Direction(int row, int col) const;
+  // Lattice-frame angles of a scanner-frame point [rad]; the azimuth is not
+  // yet unwrapped to the column range.
+  void Angles(const Eigen::Vector3d& p_scanner, double* elevation, double* azimuth) const;
 
  private:
   std::vector<double> row_elevations_;
@@ -51,6 +57,8 @@ class AngularLattice {
   Eigen::Matrix3d R_scanner_lattice_ = Eigen::Matrix3d::Identity();
   double elevation0_ = 0.0, elevation_step_ = 0.0;
   double azimuth0_ = 0.0, azimuth_step_ = 0.0;
+  double azimuth_center_ = 0.0;  // middle of the column range [rad]
+  bool full_circle_ = false;
 };
 
 }  // namespace edgefit

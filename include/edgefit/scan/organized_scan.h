@@ -67,6 +67,8 @@ class OrganizedScan {
   }
   void SetMissing(size_t i);
   void SetColor(size_t i, const std::array<uint8_t, 3>& rgb);  // allocates colors on first use
+  // Allocates the colours (black) up front, so threads may SetColor distinct cells.
+  void EnableColor();
 
   const Pose& T_world_scanner() const { return T_world_scanner_; }
   void set_T_world_scanner(const Pose& T) { T_world_scanner_ = T; }

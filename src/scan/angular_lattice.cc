@@ -1,0 +1,118 @@
+#include "edgefit/scan/angular_lattice.h"
+
+#include <glog/logging.h>
+
+#include <cmath>
+#include <utility>
+
+namespace edgefit {
+namespace {
+
+constexpr double kTwoPi = 2.0 * M_PI;
+
+// Least-squares line angle(i) ~ a0 + step * i through a table [rad].
+void FitLine(const std::vector<double>& table, double* a0, double* step) {
+  const size_t n = table.size();
+  if (n < 2) {
+    *a0 = n == 1 ? table[0] : 0.0;
+    *step = 0.0;
+    return;
+  }
+  double mean_i = 0.5 * static_cast<double>(n - 1), mean_a = 0.0;
+  for (double a : table) mean_a += a;
+  mean_a /= static_cast<double>(n);
+  double sxx = 0.0, sxy = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const double di = static_cast<double>(i) - mean_i;
+    sxx += di * di;
+    sxy += di * (table[i] - mean_a);
+  }
+  *step = sxy / sxx;
+  *a0 = mean_a - *step * mean_i;
+}
+
+// Fractional index of `angle` in a strictly monotonic table whose linear fit
+// is a0 + step * i. The linear guess lands within a step or two of the answer
+// for any real scanner, so the local walk keeps this O(1). Outside the table
+// the end intervals are extrapolated.
+double FractionalIndex(const std::vector<double>& table, double a0, double step,
+                       double angle) {
+  const int n = static_cast<int>(table.size());
+  if (n == 1) return (angle - table[0]) / step;
+  const double s = step > 0.0 ? 1.0 : -1.0;
+  int k = static_cast<int>(std::floor((angle - a0) / step));
+  k = std::max(0, std::min(n - 2, k));
+  while (k > 0 && s * (angle - table[k]) < 0.0) --k;
+  while (k < n - 2 && s * (angle - table[k + 1]) > 0.0) ++k;
+  const double denom = table[k + 1] - table[k];
+  if (denom == 0.0) return static_cast<double>(k);
+  return static_cast<double>(k) + (angle - table[k]) / denom;
+}
+
+}  // namespace
+
+AngularLattice::AngularLattice(std::vector<double> row_elevations,
+                               std::vector<double> col_azimuths,
+                               const Eigen::Matrix3d& R_scanner_lattice)
+    : row_elevations_(std::move(row_elevations)),
+      col_azimuths_(std::move(col_azimuths)),
+      R_scanner_lattice_(R_scanner_lattice) {
+  CHECK(!row_elevations_.empty() && !col_azimuths_.empty()) << "empty lattice";
+  FitLine(row_elevations_, &elevation0_, &elevation_step_);
+  FitLine(col_azimuths_, &azimuth0_, &azimuth_step_);
+  // A single row or column has no step of its own: borrow the other axis'
+  // step so that projection still accepts half a cell either side.
+  constexpr double kDefaultStep = 1e-3;  // [rad]
+  if (elevation_step_ == 0.0) {
+    elevation_step_ = azimuth_step_ != 0.0 ? std::abs(azimuth_step_) : kDefaultStep;
+  }
+  if (azimuth_step_ == 0.0) azimuth_step_ = std::abs(elevation_step_);
+  azimuth_center_ = 0.5 * (col_azimuths_.front() + col_azimuths_.back());
+  full_circle_ = cols() >= 2 &&
+                 static_cast<double>(cols()) * std::abs(azimuth_step_) >=
+                     kTwoPi - std::abs(azimuth_step_);
+}
+
+void AngularLattice::Angles(const Eigen::Vector3d& p_scanner, double* elevation,
+                            double* azimuth) const {
+  const Eigen::Vector3d p_lattice = R_scanner_lattice_.transpose() * p_scanner;
+  *elevation = std::atan2(p_lattice.z(), std::hypot(p_lattice.x(), p_lattice.y()));
+  *azimuth = std::atan2(p_lattice.y(), p_lattice.x());
+}
+
+bool AngularLattice::Project(const Eigen::Vector3d& p_scanner, double* row,
+                             double* col) const {
+  if (!valid() || !(p_scanner.squaredNorm() > 1e-18)) return false;
+  double elevation, azimuth;
+  Angles(p_scanner, &elevation, &azimuth);
+  // Unwrap the azimuth into the 2 pi window centred on the column range.
+  azimuth = azimuth_center_ + std::remainder(azimuth - azimuth_center_, kTwoPi);
+  *row = FractionalIndex(row_elevations_, elevation0_, elevation_step_, elevation);
+  *col = FractionalIndex(col_azimuths_, azimuth0_, azimuth_step_, azimuth);
+  if (!(*row >= -0.5 && *row < rows() - 0.5)) return false;
+  if (full_circle_) {
+    // Columns per turn; equals cols() unless the scan overlaps itself.
+    const double period = kTwoPi / std::abs(azimuth_step_);
+    if (*col >= cols() - 0.5) *col -= period;
+    if (*col < -0.5) *col += period;
+  }
+  return *col >= -0.5 && *col < cols() - 0.5;
+}
+
+bool AngularLattice::ProjectToCell(const Eigen::Vector3d& p_scanner, int* row,
+                                   int* col) const {
+  double r, c;
+  if (!Project(p_scanner, &r, &c)) return false;
+  *row = std::max(0, std::min(rows() - 1, static_cast<int>(std::floor(r + 0.5))));
+  *col = std::max(0, std::min(cols() - 1, static_cast<int>(std::floor(c + 0.5))));
+  return true;
+}
+
+Eigen::Vector3d AngularLattice::Direction(int row, int col) const {
+  const double e = row_elevations_[row], a = col_azimuths_[col];
+  const Eigen::Vector3d d_lattice(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a),
+                                  std::sin(e));
+  return R_scanner_lattice_ * d_lattice;
+}
+
+}  // namespace edgefit
