@@ -23,6 +23,12 @@ struct TriangleMesh {
   double SurfaceArea() const;
 };
 
+// Merges vertices with bit-identical coordinates (STL stores each triangle's
+// corners separately; welding makes neighbouring triangles share edges) and
+// drops triangles that become degenerate (two equal indices). Returns the
+// number of triangles dropped.
+int WeldIdenticalVertices(TriangleMesh* mesh);
+
 }  // namespace edgefit
 
 #endif  // EDGEFIT_MODEL_TRIANGLE_MESH_H_

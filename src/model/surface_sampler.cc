@@ -1,0 +1,98 @@
+#include "edgefit/model/surface_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace edgefit {
+namespace {
+
+// SplitMix64 (Steele, Lea, Flood 2014): tiny, fast, passes BigCrush, and
+// fully specified, so results are the same on every platform.
+class SplitMix64 {
+ public:
+  explicit SplitMix64(uint64_t seed) : state_(seed) {}
+  uint64_t Next() {
+    uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [0, 1) from the top 53 bits.
+  double Uniform() { return static_cast<double>(Next() >> 11) * 0x1.0p-53; }
+
+ private:
+  uint64_t state_;
+};
+
+uint64_t MixSeed(uint64_t seed, uint64_t index) {
+  SplitMix64 mix(seed ^ (index * 0xD1B54A32D192ED03ULL));
+  return mix.Next();
+}
+
+}  // namespace
+
+bool SamplingOptions::IsValid(std::string* error) const {
+  if (!(spacing > 0.0) || !std::isfinite(spacing)) {
+    *error = "spacing must be a positive number of metres";
+    return false;
+  }
+  return true;
+}
+
+SurfaceSamples SampleMeshSurface(const TriangleMesh& mesh, double spacing, uint64_t seed) {
+  SurfaceSamples out;
+  const size_t num_triangles = mesh.triangles.size();
+  std::vector<double> cumulative_area(num_triangles);
+  std::vector<Eigen::Vector3d> normals(num_triangles);
+  double total = 0.0;
+  for (size_t t = 0; t < num_triangles; ++t) {
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    const Eigen::Vector3d& a = mesh.vertices[tri[0]];
+    const Eigen::Vector3d cross = (mesh.vertices[tri[1]] - a).cross(mesh.vertices[tri[2]] - a);
+    const double norm = cross.norm();
+    total += 0.5 * norm;
+    cumulative_area[t] = total;
+    normals[t] = norm > 0.0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
+  }
+  if (!(total > 0.0)) return out;
+  const size_t count =
+      std::max<size_t>(1, static_cast<size_t>(std::llround(total / (spacing * spacing))));
+  out.points.reserve(count);
+  out.normals.reserve(count);
+  out.triangles.reserve(count);
+  SplitMix64 rng(seed);
+  for (size_t i = 0; i < count; ++i) {
+    const double u = (static_cast<double>(i) + rng.Uniform()) / static_cast<double>(count) * total;
+    // First triangle whose cumulative area exceeds u: zero-area triangles
+    // are never chosen.
+    size_t t = std::upper_bound(cumulative_area.begin(), cumulative_area.end(), u) -
+               cumulative_area.begin();
+    t = std::min(t, num_triangles - 1);
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    const Eigen::Vector3d& a = mesh.vertices[tri[0]];
+    const Eigen::Vector3d& b = mesh.vertices[tri[1]];
+    const Eigen::Vector3d& c = mesh.vertices[tri[2]];
+    // Uniform on the triangle: s = sqrt(r1), p = a + s (1 - r2) (b - a) + s r2 (c - a).
+    const double s = std::sqrt(rng.Uniform());
+    const double r2 = rng.Uniform();
+    const Eigen::Vector3d p = a + s * (1.0 - r2) * (b - a) + s * r2 * (c - a);
+    out.points.push_back(p.cast<float>());
+    out.normals.push_back(normals[t].cast<float>());
+    out.triangles.push_back(static_cast<int>(t));
+  }
+  return out;
+}
+
+std::vector<SurfaceSamples> SampleModelSurfaces(const KinematicModel& model,
+                                                const SamplingOptions& options) {
+  const int num_links = static_cast<int>(model.links().size());
+  std::vector<SurfaceSamples> out(num_links);
+#pragma omp parallel for schedule(dynamic)
+  for (int l = 0; l < num_links; ++l) {
+    out[l] = SampleMeshSurface(model.links()[l].mesh, options.spacing,
+                               MixSeed(options.seed, static_cast<uint64_t>(l)));
+  }
+  return out;
+}
+
+}  // namespace edgefit
