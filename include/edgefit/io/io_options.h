@@ -1,0 +1,27 @@
+// Options shared by the scan readers and writers (PTX, PCD, PLY).
+#ifndef EDGEFIT_IO_IO_OPTIONS_H_
+#define EDGEFIT_IO_IO_OPTIONS_H_
+
+#include "edgefit/scan/lattice_estimation.h"
+
+namespace edgefit {
+
+struct ReadOptions {
+  // Estimate each organized scan's AngularLattice after loading (a scan whose
+  // lattice cannot be estimated, e.g. one without valid points, fails the read).
+  bool estimate_lattice = true;
+  LatticeOptions lattice;
+  // PTX: detect the rows/columns order and the fast index from the data
+  // (DESIGN.md, Formats); false trusts the standard layout (line 1 = columns,
+  // line 2 = rows, column by column).
+  bool detect_ptx_layout = true;
+};
+
+struct WriteOptions {
+  // PCD and PLY: binary (little endian) when true, ASCII otherwise. PTX is text.
+  bool binary = true;
+};
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_IO_IO_OPTIONS_H_

@@ -1,0 +1,58 @@
+#include "edgefit/io/scan_io.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "edgefit/io/pcd.h"
+#include "edgefit/io/ply.h"
+#include "edgefit/io/ptx.h"
+
+namespace edgefit {
+namespace {
+
+enum class Format { kPtx, kPcd, kPly, kUnknown };
+
+Format FormatOf(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  const size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return Format::kUnknown;
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == "ptx") return Format::kPtx;
+  if (ext == "pcd") return Format::kPcd;
+  if (ext == "ply") return Format::kPly;
+  return Format::kUnknown;
+}
+
+Status Unknown(const std::string& path) {
+  return Status::Error(path + ": unknown scan format (expected a .ptx, .pcd or .ply file)");
+}
+
+}  // namespace
+
+Status ReadScans(const std::string& path, const ReadOptions& options, ScanSet* scans) {
+  switch (FormatOf(path)) {
+    case Format::kPtx: return ReadPtx(path, options, scans);
+    case Format::kPcd: return ReadPcd(path, options, scans);
+    case Format::kPly: return ReadPly(path, options, scans);
+    case Format::kUnknown: break;
+  }
+  return Unknown(path);
+}
+
+Status WriteScans(const std::string& path, const ScanSet& scans, const WriteOptions& options) {
+  switch (FormatOf(path)) {
+    case Format::kPtx: return WritePtx(path, scans);
+    case Format::kPcd:
+      if (scans.scans.size() != 1) {
+        return Status::Error(path + ": a PCD file holds one scan, got " + std::to_string(scans.scans.size()));
+      }
+      return WritePcd(path, scans.scans[0], options);
+    case Format::kPly: return WritePly(path, scans, options);
+    case Format::kUnknown: break;
+  }
+  return Unknown(path);
+}
+
+}  // namespace edgefit
