@@ -1,5 +1,6 @@
 #include "edgefit/model/composition.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -43,6 +44,47 @@ Status ParseAttachSpec(const std::string& spec, AttachSpec* attach) {
                                        Eigen::Vector3d(values[3], values[4], values[5]));
   }
   *attach = std::move(out);
+  return Status::Ok();
+}
+
+Status ParseAttachSpecList(const std::string& list, std::vector<AttachSpec>* specs) {
+  std::vector<std::string> items;
+  size_t begin = 0;
+  while (begin <= list.size() && !list.empty()) {
+    const size_t comma = std::min(list.find(',', begin), list.size());
+    const std::string token = list.substr(begin, comma - begin);
+    // Continue a pose "@link:x,y,..." until it holds its six numbers.
+    bool in_pose = false;
+    if (!items.empty()) {
+      const std::string& last = items.back();
+      const size_t at = last.rfind('@');
+      const size_t colon = at == std::string::npos ? std::string::npos : last.find(':', at);
+      in_pose = colon != std::string::npos &&
+                std::count(last.begin() + colon, last.end(), ',') < 5;
+    }
+    if (in_pose) {
+      items.back() += "," + token;
+    } else {
+      items.push_back(token);
+    }
+    begin = comma + 1;
+  }
+  std::vector<AttachSpec> out;
+  for (const std::string& item : items) {
+    AttachSpec spec;
+    EDGEFIT_RETURN_IF_ERROR(ParseAttachSpec(item, &spec));
+    out.push_back(std::move(spec));
+  }
+  *specs = std::move(out);
+  return Status::Ok();
+}
+
+Status LoadModelWithAttachments(const std::string& urdf_path, const std::vector<AttachSpec>& specs,
+                                const ModelLoadOptions& options, KinematicModel* model) {
+  KinematicModel out;
+  EDGEFIT_RETURN_IF_ERROR(LoadKinematicModel(urdf_path, options, &out));
+  for (const AttachSpec& spec : specs) EDGEFIT_RETURN_IF_ERROR(AttachModel(spec, options, &out));
+  *model = std::move(out);
   return Status::Ok();
 }
 

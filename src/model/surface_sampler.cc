@@ -1,5 +1,7 @@
 #include "edgefit/model/surface_sampler.h"
 
+#include <glog/logging.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -40,6 +42,7 @@ bool SamplingOptions::IsValid(std::string* error) const {
 }
 
 SurfaceSamples SampleMeshSurface(const TriangleMesh& mesh, double spacing, uint64_t seed) {
+  CHECK_GT(spacing, 0.0) << "see SamplingOptions::IsValid";
   SurfaceSamples out;
   const size_t num_triangles = mesh.triangles.size();
   std::vector<double> cumulative_area(num_triangles);

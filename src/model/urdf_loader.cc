@@ -1,7 +1,6 @@
 #include "edgefit/model/urdf_loader.h"
 
 #include <console_bridge/console.h>
-#include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <cstdlib>
@@ -15,6 +14,7 @@
 #include "edgefit/model/mesh_loader.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "edgefit/model/resource_path.h"
+#include "urdf_xml_scan.h"
 
 namespace edgefit {
 
@@ -31,70 +31,6 @@ bool ModelLoadOptions::IsValid(std::string* error) const {
 }
 
 namespace {
-
-// What we read from the XML ourselves before urdfdom sees it: element order
-// (urdfdom keeps links and joints in name-sorted maps), joint types (so an
-// unsupported type gets our message, not urdfdom's) and <loop_closure>s.
-struct UrdfXmlScan {
-  std::vector<std::string> link_names, joint_names;
-  std::vector<LoopClosureSpec> loop_closures;
-};
-
-bool ParseVector3(const char* text, Eigen::Vector3d* v) {
-  if (text == nullptr) return false;
-  std::istringstream in(text);
-  std::string extra;
-  return static_cast<bool>(in >> v->x() >> v->y() >> v->z()) && !(in >> extra);
-}
-
-Status ScanUrdfXml(const std::string& xml, UrdfXmlScan* scan) {
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
-    return Status::Error(std::string("XML error at line ") + std::to_string(doc.ErrorLineNum()) +
-                         ": " + doc.ErrorName());
-  }
-  const tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
-  if (robot == nullptr) return Status::Error("no <robot> element");
-  for (const tinyxml2::XMLElement* e = robot->FirstChildElement(); e != nullptr;
-       e = e->NextSiblingElement()) {
-    const std::string tag = e->Name();
-    const char* name = e->Attribute("name");
-    if (tag == "link" && name != nullptr) scan->link_names.push_back(name);
-    if (tag == "joint") {
-      if (name == nullptr) return Status::Error("<joint> without a name");
-      const char* type = e->Attribute("type");
-      const std::string where = std::string("joint '") + name + "'";
-      if (type == nullptr) return Status::Error(where + ": no type");
-      const std::string t = type;
-      if (t != "fixed" && t != "revolute" && t != "continuous" && t != "prismatic") {
-        return Status::Error(where + ": unsupported type '" + t +
-                             "' (edgefit handles fixed, revolute, continuous, prismatic)");
-      }
-      scan->joint_names.push_back(name);
-    }
-    if (tag == "loop_closure") {
-      LoopClosureSpec spec;
-      spec.name = name != nullptr ? name : "";
-      const std::string where = "loop_closure '" + spec.name + "'";
-      const char* link_a = e->Attribute("link_a");
-      const char* link_b = e->Attribute("link_b");
-      const char* joints = e->Attribute("joints");
-      if (name == nullptr || link_a == nullptr || link_b == nullptr || joints == nullptr) {
-        return Status::Error(where + ": needs name, link_a, link_b and joints");
-      }
-      spec.link_a = link_a;
-      spec.link_b = link_b;
-      if (!ParseVector3(e->Attribute("point_a"), &spec.p_link_a) ||
-          !ParseVector3(e->Attribute("point_b"), &spec.p_link_b)) {
-        return Status::Error(where + ": point_a and point_b must be \"x y z\" [m]");
-      }
-      std::istringstream in(joints);
-      for (std::string j; in >> j;) spec.joints.push_back(j);
-      scan->loop_closures.push_back(spec);
-    }
-  }
-  return Status::Ok();
-}
 
 // Collects urdfdom's console_bridge errors while installed (instead of
 // printing them), so the caller can fold them into one Status line.

@@ -26,6 +26,34 @@ TEST(ParseAttachSpecTest, PathLinkAndOptionalPose) {
   }
 }
 
+TEST(ParseAttachSpecTest, CommaListKeepsPosesTogether) {
+  std::vector<AttachSpec> specs;
+  ASSERT_TRUE(ParseAttachSpecList("gun.urdf@tool0,cam.urdf@link_3:0,0,0.1,0,0,0.5,x.urdf@link_1", &specs).ok());
+  ASSERT_EQ(specs.size(), 3u);
+  EXPECT_EQ(specs[0].path, "gun.urdf");
+  EXPECT_EQ(specs[1].parent_link, "link_3");
+  EXPECT_TRUE(specs[1].T_parent_root.translation().isApprox(Eigen::Vector3d(0, 0, 0.1)));
+  EXPECT_EQ(specs[2].path, "x.urdf");
+  EXPECT_EQ(specs[2].parent_link, "link_1");
+  ASSERT_TRUE(ParseAttachSpecList("", &specs).ok());
+  EXPECT_TRUE(specs.empty());
+  EXPECT_FALSE(ParseAttachSpecList("gun.urdf@tool0:1,2", &specs).ok());
+  EXPECT_FALSE(ParseAttachSpecList("gun.urdf@tool0,,x.urdf@a", &specs).ok());
+}
+
+TEST(AttachModelTest, LoadWithAttachmentsChains) {
+  std::vector<AttachSpec> specs;
+  ASSERT_TRUE(ParseAttachSpecList(kModels + "simple_tool.urdf@tool0", &specs).ok());
+  specs.push_back(specs[0]);
+  specs[1].parent_link = "tcp";  // On the first tool.
+  specs[1].prefix = "b_";
+  KinematicModel model;
+  const Status status = LoadModelWithAttachments(kModels + "fk_arm.urdf", specs, {}, &model);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_GE(model.JointIndex("tcp_to_b_mount"), 0);
+  EXPECT_EQ(model.links().size(), 14u);
+}
+
 TEST(AttachModelTest, ToolFollowsTheParentLink) {
   KinematicModel model;
   ASSERT_TRUE(LoadKinematicModel(kModels + "fk_arm.urdf", {}, &model).ok());

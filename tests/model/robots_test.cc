@@ -8,6 +8,8 @@
 
 #include "edgefit/model/composition.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/model/sharp_edges.h"
+#include "edgefit/model/surface_sampler.h"
 #include "edgefit/model/urdf_loader.h"
 
 namespace edgefit {
@@ -57,7 +59,7 @@ TEST_P(RobotModelTest, MeshesLoadAndEveryVisualLinkHasTriangles) {
     const Eigen::AlignedBox3d bb = link.mesh.BoundingBox();
     std::cout << "  " << GetParam().name << " link " << link.name << ": " << link_triangles
               << " triangles";
-    if (!bb.isEmpty()) std::cout << ", bbox [" << bb.min().transpose() << "] [" << bb.max().transpose() << "]";
+    if (!bb.isEmpty()) std::cout << ", area " << link.mesh.SurfaceArea() << " m2, bbox [" << bb.min().transpose() << "] [" << bb.max().transpose() << "]";
     std::cout << "\n";
     total += link_triangles;
   }
@@ -87,6 +89,25 @@ TEST_P(RobotModelTest, JointOriginsLieNearTheirLinkMeshes) {
         << GetParam().name << ": joint " << joint.name << " origin " << origin.transpose()
         << " far from the meshes of " << parent.name << " and " << child.name;
   }
+}
+
+TEST_P(RobotModelTest, SurfaceSamplesAndSharpEdges) {
+  SamplingOptions options;  // 2 mm spacing.
+  const std::vector<SurfaceSamples> samples = SampleModelSurfaces(model_, options);
+  size_t total = 0, expected = 0, sharp = 0, boundary = 0;
+  for (size_t l = 0; l < model_.links().size(); ++l) {
+    const TriangleMesh& mesh = model_.links()[l].mesh;
+    if (mesh.empty()) continue;
+    total += samples[l].size();
+    expected += static_cast<size_t>(std::llround(mesh.SurfaceArea() / (options.spacing * options.spacing)));
+    const MeshEdges edges = ExtractSharpEdges(mesh);
+    sharp += edges.sharp.size();
+    boundary += edges.boundary.size();
+    EXPECT_FALSE(edges.sharp.empty()) << model_.links()[l].name;
+  }
+  std::cout << "  " << GetParam().name << ": " << total << " samples at 2 mm, " << sharp
+            << " sharp edges, " << boundary << " open boundary edges\n";
+  EXPECT_NEAR(static_cast<double>(total), static_cast<double>(expected), 1.0 * model_.links().size());
 }
 
 TEST_P(RobotModelTest, ZeroPoseBoundingBox) {

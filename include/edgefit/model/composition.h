@@ -5,6 +5,7 @@
 #define EDGEFIT_MODEL_COMPOSITION_H_
 
 #include <string>
+#include <vector>
 
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
@@ -29,11 +30,22 @@ struct AttachSpec {
 // last '@' separates the path. One spec only: the caller splits lists.
 Status ParseAttachSpec(const std::string& spec, AttachSpec* attach);
 
+// Parses a comma-separated list of specs as given to --attach, e.g.
+// "gun.urdf@tool0,cam.urdf@link_3:0,0,0.1,0,0,0". A comma inside a pose
+// belongs to the pose (six numbers follow the ':'), so splitting the list
+// naively on commas would be wrong. An empty list gives no specs.
+Status ParseAttachSpecList(const std::string& list, std::vector<AttachSpec>* specs);
+
 // Loads spec.path and adds its links, joints and loop closures to *model,
 // joined by a fixed joint "<parent_link>_to_<root>" (prefixed root name)
 // with origin T_parent_root. Attached links keep Link::source = spec.path.
 // On failure *model is unchanged.
 Status AttachModel(const AttachSpec& spec, const ModelLoadOptions& options, KinematicModel* model);
+
+// The main URDF with every attachment applied in order (a later spec may
+// name a link of an earlier attachment as its parent).
+Status LoadModelWithAttachments(const std::string& urdf_path, const std::vector<AttachSpec>& specs,
+                                const ModelLoadOptions& options, KinematicModel* model);
 
 }  // namespace edgefit
 

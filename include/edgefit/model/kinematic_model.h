@@ -94,12 +94,17 @@ class KinematicModel {
   std::vector<int> IndependentJoints() const;
 
   // A joint vector of zeros (clamped into the limits where 0 is outside them).
+  // Dependent joints are left at 0 too: call ResolveDependentJoints after.
   std::vector<double> ZeroJoints() const;
-  // Fills mimic and loop-closure joints from the independent ones. Fails when a
-  // loop closure cannot be met (residual above `tolerance` [m]).
+  // Fills mimic and loop-closure joints from the independent ones, in
+  // dependency order (a mimic of a loop-driven joint follows its solved
+  // master; a closure waits for the mimic joints on its paths). Loop-closure
+  // joints are warm-started from their values in *q (see loop_closure.h).
+  // Fails when a loop closure cannot be met (residual above `tolerance` [m]),
+  // keeping the best values found, or on a dependency cycle.
   Status ResolveDependentJoints(std::vector<double>* q, double tolerance = 1e-6) const;
-  // T_world_link for every link, for full joint values q (dependent joints
-  // already resolved) and the root's pose T_world_root.
+  // T_world_link for every link, for full joint values q (size joints(),
+  // dependent joints already resolved) and the root's pose T_world_root.
   std::vector<Pose> ForwardKinematics(const std::vector<double>& q,
                                       const Pose& T_world_root = Pose::Identity()) const;
   // Axis-aligned box of all link meshes posed by q.
