@@ -225,13 +225,15 @@ Status ParsePtx(std::string_view content, const std::string& name, const ReadOpt
     const PtxLayout layout = options.detect_ptx_layout
                                  ? DetectPtxLayout(in_file_order, first, second)
                                  : StandardPtxLayout(first, second);
-    OrganizedScan scan = ApplyPtxLayout(std::move(in_file_order), layout);
-    EDGEFIT_RETURN_IF_ERROR(
-        io_internal::FinishScan(name + ": scan " + std::to_string(scan_number), options, &scan));
-    parsed.scans.push_back(std::move(scan));
+    parsed.scans.push_back(ApplyPtxLayout(std::move(in_file_order), layout));
     parsed.sources.push_back(name);
   }
   if (parsed.scans.empty()) return Status::Error(name + ": no scans (empty file)");
+  // Syntax errors anywhere in the file come first; then per-scan checks.
+  for (size_t i = 0; i < parsed.scans.size(); ++i) {
+    EDGEFIT_RETURN_IF_ERROR(
+        io_internal::FinishScan(name + ": scan " + std::to_string(i + 1), options, &parsed.scans[i]));
+  }
   for (size_t i = 0; i < parsed.scans.size(); ++i) {
     scans->scans.push_back(std::move(parsed.scans[i]));
     scans->sources.push_back(std::move(parsed.sources[i]));

@@ -1,0 +1,203 @@
+#include "edgefit/io/ptx.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <charconv>
+#include <cstdio>
+#include <string>
+
+#include "edgefit/core/atomic_file.h"
+#include "edgefit/io/scan_io.h"
+#include "io/io_test_util.h"
+#include "scan/synthetic_scan.h"
+
+namespace edgefit {
+namespace {
+
+using testing::ExpectSameScan;
+using testing::MakeSyntheticScan;
+using testing::SyntheticScanOptions;
+using testing::TempPath;
+
+constexpr double kDeg = M_PI / 180.0;
+
+SyntheticScanOptions SmallScan(uint32_t seed) {
+  SyntheticScanOptions o;
+  o.rows = 36;
+  o.cols = 64;
+  o.elevation_first = -45 * kDeg;
+  o.elevation_step = 1.5 * kDeg;
+  o.azimuth_first = -80 * kDeg;
+  o.azimuth_step = 1.2 * kDeg;
+  o.range_noise_m = 0.001;
+  o.missing_fraction = 0.1;
+  o.seed = seed;
+  o.T_world_scanner = PoseFromXyzRpy(Eigen::Vector3d(0.5, -3.0, 1.3), Eigen::Vector3d(0.01, -0.02, 1.2));
+  return o;
+}
+
+TEST(PtxTest, RoundTripTwoScansWithColour) {
+  ScanSet original;
+  for (uint32_t seed : {1u, 2u}) {
+    SyntheticScanOptions o = SmallScan(seed);
+    o.color = true;
+    if (seed == 2) {
+      o.R_scanner_lattice = Eigen::AngleAxisd(2 * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
+      o.T_world_scanner = PoseFromXyYaw(2.0, 1.0, -2.5);
+    }
+    original.scans.push_back(MakeSyntheticScan(testing::RoomScene(), o));
+  }
+  const std::string path = TempPath("round_trip.ptx");
+  ASSERT_TRUE(WriteScans(path, original, WriteOptions()).ok());
+  ScanSet first, second;
+  const Status s1 = ReadScans(path, ReadOptions(), &first);
+  ASSERT_TRUE(s1.ok()) << s1.message();
+  ASSERT_EQ(first.scans.size(), 2u);
+  EXPECT_EQ(first.sources[1], path);
+  for (size_t s = 0; s < 2; ++s) {
+    // The writer's lattice-free scans against the reader's: same cells and poses.
+    OrganizedScan expected = original.scans[s];
+    expected.set_lattice(first.scans[s].lattice());
+    ExpectSameScan(expected, first.scans[s]);
+    EXPECT_TRUE(first.scans[s].lattice().valid());
+    EXPECT_EQ(first.scans[s].file_order(), OrganizedScan::FileOrder::kColumnMajor);
+  }
+  const std::string path2 = TempPath("round_trip2.ptx");
+  ASSERT_TRUE(WriteScans(path2, first, WriteOptions()).ok());
+  ASSERT_TRUE(ReadScans(path2, ReadOptions(), &second).ok());
+  ASSERT_EQ(second.scans.size(), 2u);
+  for (size_t s = 0; s < 2; ++s) ExpectSameScan(first.scans[s], second.scans[s]);
+  // Same bytes the second time: the writer is deterministic and exact.
+  std::string a, b;
+  ASSERT_TRUE(ReadFileToString(path, &a).ok());
+  ASSERT_TRUE(ReadFileToString(path2, &b).ok());
+  EXPECT_EQ(a, b);
+  std::remove(path.c_str());
+  std::remove(path2.c_str());
+}
+
+TEST(PtxTest, WorldIsMatrixAppliedAndMissingIsZero) {
+  // 2 columns x 2 rows; translation (10, 20, 30), 90 degrees about z: the
+  // matrix lines hold the rotation's columns (row-vector convention).
+  const std::string text =
+      "2\n2\n10 20 30\n0 1 0\n-1 0 0\n0 0 1\n"
+      "0 1 0 0\n-1 0 0 0\n0 0 1 0\n10 20 30 1\n"
+      "1 0 0 0.5\n0 0 0 0.5\n1 0.1 0.2 0.25\n2 0 1 0.75\n";
+  ReadOptions options;
+  options.estimate_lattice = false;
+  options.detect_ptx_layout = false;
+  ScanSet set;
+  const Status status = ParsePtx(text, "tiny.ptx", options, &set);
+  ASSERT_TRUE(status.ok()) << status.message();
+  const OrganizedScan& scan = set.scans[0];
+  EXPECT_EQ(scan.rows(), 2);
+  EXPECT_EQ(scan.cols(), 2);
+  EXPECT_FALSE(scan.IsValid(1));
+  EXPECT_EQ(scan.CountValid(), 3u);
+  EXPECT_TRUE(scan.PointWorld(0).isApprox(Eigen::Vector3d(10, 21, 30), 1e-12));
+  EXPECT_TRUE(scan.PointWorld(3).isApprox(Eigen::Vector3d(10, 22, 31), 1e-12));
+  EXPECT_FLOAT_EQ(scan.intensity(2), 0.25f);
+}
+
+// Writes `scan` as PTX text with the header sizes in either order and the
+// cells column by column or row by row.
+std::string PtxText(const OrganizedScan& scan, bool header_rows_first, bool row_major) {
+  std::string t = header_rows_first ? std::to_string(scan.rows()) + "\n" + std::to_string(scan.cols()) + "\n"
+                                    : std::to_string(scan.cols()) + "\n" + std::to_string(scan.rows()) + "\n";
+  t += "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+  char buf[32];
+  auto add = [&](float v) { t.append(buf, std::to_chars(buf, buf + 32, v).ptr); };
+  const int outer = row_major ? scan.rows() : scan.cols(), inner = row_major ? scan.cols() : scan.rows();
+  for (int o = 0; o < outer; ++o) {
+    for (int k = 0; k < inner; ++k) {
+      const size_t i = row_major ? scan.Index(o, k) : scan.Index(k, o);
+      if (!scan.IsValid(i)) {
+        t += "0 0 0 0\n";
+        continue;
+      }
+      const Eigen::Vector3f& p = scan.point_scanner(i);
+      add(p.x()); t += ' '; add(p.y()); t += ' '; add(p.z()); t += ' '; add(scan.intensity(i)); t += '\n';
+    }
+  }
+  return t;
+}
+
+struct LayoutCase {
+  const char* name;
+  bool header_rows_first;
+  bool row_major;
+};
+
+class PtxLayoutTest : public ::testing::TestWithParam<LayoutCase> {};
+
+TEST_P(PtxLayoutTest, DetectsLayoutFromData) {
+  for (bool reversed : {false, true}) {  // also: azimuth decreasing, rows top-down
+    SyntheticScanOptions o = SmallScan(5);
+    if (reversed) {
+      o.azimuth_first = -o.azimuth_first;
+      o.azimuth_step = -o.azimuth_step;
+      o.elevation_first = 10 * kDeg;
+      o.elevation_step = -o.elevation_step;
+    }
+    const OrganizedScan truth = MakeSyntheticScan(testing::RoomScene(), o);
+    ScanSet set;
+    const Status status = ParsePtx(PtxText(truth, GetParam().header_rows_first, GetParam().row_major),
+                                   "layout.ptx", ReadOptions(), &set);
+    ASSERT_TRUE(status.ok()) << status.message();
+    const OrganizedScan& scan = set.scans[0];
+    EXPECT_EQ(scan.file_order(), GetParam().row_major ? OrganizedScan::FileOrder::kRowMajor
+                                                      : OrganizedScan::FileOrder::kColumnMajor);
+    OrganizedScan expected = truth;
+    expected.set_lattice(scan.lattice());
+    expected.set_T_world_scanner(scan.T_world_scanner());
+    ExpectSameScan(expected, scan);
+    // And the writer keeps the file order: read(write(scan)) == scan.
+    const std::string path = TempPath(std::string(GetParam().name) + ".ptx");
+    ASSERT_TRUE(WritePtx(path, set).ok());
+    ScanSet again;
+    ASSERT_TRUE(ReadPtx(path, ReadOptions(), &again).ok());
+    EXPECT_EQ(again.scans[0].file_order(), scan.file_order());
+    ExpectSameScan(scan, again.scans[0]);
+    std::remove(path.c_str());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(FourLayouts, PtxLayoutTest,
+                         ::testing::Values(LayoutCase{"ColumnsRowsColumnMajor", false, false},
+                                           LayoutCase{"RowsColumnsColumnMajor", true, false},
+                                           LayoutCase{"ColumnsRowsRowMajor", false, true},
+                                           LayoutCase{"RowsColumnsRowMajor", true, true}),
+                         [](const ::testing::TestParamInfo<LayoutCase>& info) { return info.param.name; });
+
+TEST(PtxTest, LoadedScanFitsMemoryBudget) {
+  for (bool color : {false, true}) {
+    SyntheticScanOptions o = SmallScan(3);
+    o.color = color;
+    ScanSet set;
+    set.scans.push_back(MakeSyntheticScan(testing::RoomScene(), o));
+    const std::string path = TempPath("memory.ptx");
+    ASSERT_TRUE(WritePtx(path, set).ok());
+    ScanSet loaded;
+    ASSERT_TRUE(ReadPtx(path, ReadOptions(), &loaded).ok());
+    const double bytes = loaded.scans[0].BytesPerCell();
+    EXPECT_LE(bytes, 40.0);
+    EXPECT_GE(bytes, color ? 19.0 : 16.0);
+    std::remove(path.c_str());
+  }
+}
+
+TEST(PtxTest, WritePtxRefusesUnorganizedScans) {
+  ScanSet set;
+  set.scans.emplace_back(1, 10);
+  set.scans[0].set_organized(false);
+  const std::string path = TempPath("unorganized.ptx");
+  const Status status = WritePtx(path, set);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(status.message().find("organized"), std::string::npos);
+  std::string content;
+  EXPECT_FALSE(ReadFileToString(path, &content).ok()) << "no file may be left behind";
+}
+
+}  // namespace
+}  // namespace edgefit
