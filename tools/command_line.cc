@@ -99,19 +99,6 @@ void PrintOverview() {
                "1 internal failure.\n";
 }
 
-std::vector<std::string> SplitAttachList(const std::string& list) {
-  std::vector<std::string> specs;
-  for (const std::string& token : SplitList(list)) {
-    // A token with '@' starts a spec; the others continue its origin "x,y,z,r,p,y".
-    if (token.find('@') != std::string::npos || specs.empty()) {
-      specs.push_back(token);
-    } else {
-      specs.back() += "," + token;
-    }
-  }
-  return specs;
-}
-
 std::vector<std::string> SplitList(const std::string& list) {
   std::vector<std::string> items;
   size_t start = 0;

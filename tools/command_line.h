@@ -43,9 +43,7 @@ void PrintOverview();
 
 // Splits "a,b,,c" into {"a", "b", "c"}.
 std::vector<std::string> SplitList(const std::string& list);
-// Splits an --attach list into specs: "g.urdf@tool0:0,0,0.1,0,0,0,h.urdf@l3" gives
-// {"g.urdf@tool0:0,0,0.1,0,0,0", "h.urdf@l3"} (commas inside an origin stay).
-std::vector<std::string> SplitAttachList(const std::string& list);
+
 
 }  // namespace edgefit::tools
 

@@ -136,17 +136,16 @@ json JointJson(const KinematicModel& model, const Joint& joint) {
 }
 
 int RunModelInfo(const Command& command) {
+  std::vector<AttachSpec> specs;
+  Status status = ParseAttachSpecList(FLAGS_attach, &specs);
+  if (!status.ok()) return BadInput(command, status.WithContext("--attach"));
   KinematicModel model;
-  const ModelLoadOptions options;
-  Status status = LoadKinematicModel(FLAGS_urdf, options, &model);
+  status = LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model);
   if (!status.ok()) return BadInput(command, status);
   json attachments = json::array();
-  for (const std::string& spec_text : SplitAttachList(FLAGS_attach)) {
-    AttachSpec spec;
-    status = ParseAttachSpec(spec_text, &spec);
-    if (status.ok()) status = AttachModel(spec, options, &model);
-    if (!status.ok()) return BadInput(command, status.WithContext("--attach=" + spec_text));
-    attachments.push_back(spec_text);
+  for (const AttachSpec& spec : specs) {
+    attachments.push_back({{"path", spec.path}, {"parent_link", spec.parent_link},
+                           {"T_parent_root", PoseJson(spec.T_parent_root)}});
   }
   std::vector<double> q = model.ZeroJoints();
   status = model.ResolveDependentJoints(&q);
