@@ -1,3 +1,4 @@
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -101,6 +102,9 @@ Status ParseHeader(const std::string& name, LineCursor* cursor, PcdHeader* h) {
     return Status::Error(where + "FIELDS, SIZE, TYPE and COUNT disagree in length");
   }
   if (h->width <= 0 || h->height <= 0) return Status::Error(where + "WIDTH and HEIGHT are required");
+  if (h->width > INT_MAX || h->height > INT_MAX || h->width * h->height > INT_MAX) {
+    return Status::Error(where + "WIDTH x HEIGHT is too large");
+  }
   if (h->points >= 0 && h->points != h->width * h->height) {
     return Status::Error(where + "POINTS " + std::to_string(h->points) + " != WIDTH x HEIGHT " +
                          std::to_string(h->width * h->height));

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -61,8 +62,8 @@ Status ParseHeader(const std::string& name, LineCursor* cursor, std::string* for
     } else if (t[0] == "element") {
       int64_t count = -1;
       const char* p = t.size() == 3 ? t[2].data() : e;
-      if (t.size() != 3 || !io_internal::ParseInt(&p, e, &count) || count < 0) {
-        return Status::Error(where + "expected 'element <name> <count>'");
+      if (t.size() != 3 || !io_internal::ParseInt(&p, e, &count) || count < 0 || count > INT_MAX) {
+        return Status::Error(where + "expected 'element <name> <count>' with 0 <= count < 2^31");
       }
       elements->push_back({std::string(t[1]), count, {}, 0, false});
     } else if (t[0] == "property") {

@@ -102,8 +102,10 @@ struct LineError {
 bool ParsePointLine(const char* p, const char* e, bool color, size_t k, OrganizedScan* scan,
                     std::string* error) {
   float v[4];
-  for (float& x : v) {
-    if (!ParseReal(&p, e, &x)) {
+  for (int k = 0; k < 4; ++k) {
+    // Some exporters write a missing return as a bare "0 0 0".
+    if (k == 3 && v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f && OnlyBlanks(p, e)) return true;
+    if (!ParseReal(&p, e, &v[k])) {
       *error = color ? "expected 7 numbers (x y z intensity r g b)" : "expected 4 numbers (x y z intensity)";
       return false;
     }
@@ -154,11 +156,14 @@ Status ParsePoints(const std::string& name, int scan_number, LineCursor* cursor,
     p = nl != nullptr ? nl + 1 : end;
   }
   const char* data_end = p;
-  // Colour or not, from the token count of the first point line.
-  const char* first_end = static_cast<const char*>(std::memchr(block_starts[0], '\n', static_cast<size_t>(data_end - block_starts[0])));
-  const size_t tokens = io_internal::SplitTokens(block_starts[0], first_end != nullptr ? first_end : data_end).size();
-  if (tokens != 4 && tokens != 7) {
-    return Status::Error(At(name, first_line) + "expected 4 (x y z intensity) or 7 (x y z intensity r g b) "
+  // Colour or not, from the token count of the first point line that is
+  // not a bare "0 0 0" (missing return).
+  LineCursor lines(block_starts[0], data_end, first_line);
+  const char *b, *e;
+  size_t tokens = 3;
+  while (tokens == 3 && lines.Next(&b, &e)) tokens = io_internal::SplitTokens(b, e).size();
+  if (tokens != 4 && tokens != 7 && tokens != 3) {
+    return Status::Error(At(name, lines.line()) + "expected 4 (x y z intensity) or 7 (x y z intensity r g b) "
                          "numbers on a point line, got " + std::to_string(tokens));
   }
   const bool color = tokens == 7;

@@ -77,6 +77,12 @@ std::vector<LatticeCase> Cases() {
     cases.push_back({"Window120Degrees", o});
   }
   {
+    auto o = Base();  // too narrow to observe the axis: no tilt estimate
+    o.cols = 20;
+    o.azimuth_step = 0.5 * kDeg;
+    cases.push_back({"Window10Degrees", o});
+  }
+  {
     auto o = Base();
     o.cols = 360;
     o.azimuth_first = 0.0;
