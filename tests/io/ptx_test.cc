@@ -100,6 +100,19 @@ TEST(PtxTest, WorldIsMatrixAppliedAndMissingIsZero) {
   EXPECT_FLOAT_EQ(scan.intensity(2), 0.25f);
 }
 
+TEST(PtxTest, ToleratesCrLfTabsAndBareZeroMisses) {
+  const std::string text =
+      "2\r\n2\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 1\r\n1 0 0 0\r\n0 1 0 0\r\n0 0 1 0\r\n"
+      "0 0 0 1\r\n1\t0 0 0.5\r\n0 0 0\r\n+1 0.1 0.2 0.25\r\n2 0 1e0 0.75";  // no final newline
+  ReadOptions options;
+  options.estimate_lattice = false;
+  ScanSet set;
+  const Status status = ParsePtx(text, "crlf.ptx", options, &set);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_EQ(set.scans[0].CountValid(), 3u);
+  EXPECT_FLOAT_EQ(set.scans[0].point_scanner(3).z(), 1.0f);
+}
+
 // Writes `scan` as PTX text with the header sizes in either order and the
 // cells column by column or row by row.
 std::string PtxText(const OrganizedScan& scan, bool header_rows_first, bool row_major) {

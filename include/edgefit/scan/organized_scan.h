@@ -5,8 +5,9 @@
 //   cell index = col * rows + row.
 // Points are kept in the scanner frame as float (12 bytes) with T_world_scanner
 // in double, so a cell costs 12 (xyz) + 4 (intensity) + 3 (optional RGB) bytes:
-// 19 bytes at most, under the 40 bytes per cell budget. A missing cell (no
-// return) has NaN coordinates.
+// 19 bytes at most, under the 40 bytes per cell budget (io_test checks a
+// loaded scan with BytesPerCell). A missing cell (no return) has NaN
+// coordinates.
 #ifndef EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 #define EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 
@@ -78,7 +79,7 @@ class OrganizedScan {
   // Position of cell `i` in the file's point order.
   size_t FileIndex(size_t i) const;
 
-  // The angular lattice; valid only after EstimateLattice (lattice.h) or set_lattice.
+  // The angular lattice; valid only after EstimateLattice (lattice_estimation.h; the readers call it) or set_lattice.
   const AngularLattice& lattice() const { return lattice_; }
   void set_lattice(AngularLattice lattice) { lattice_ = std::move(lattice); }
 
