@@ -1,8 +1,8 @@
 // Scene: the triangle geometry the virtual TLS scanner sees (paper Sec. 7.3):
 // the posed equipment, its non-modelled accessories, a floor and clutter.
 // Each mesh carries the label that scan cells hitting it receive.
-#ifndef EDGEFIT_SCANNER_SCENE_H_
-#define EDGEFIT_SCANNER_SCENE_H_
+#ifndef EDGEFIT_SCENE_SCENE_H_
+#define EDGEFIT_SCENE_SCENE_H_
 
 #include <cstdint>
 #include <string>
@@ -41,4 +41,4 @@ struct Scene {
 
 }  // namespace edgefit
 
-#endif  // EDGEFIT_SCANNER_SCENE_H_
+#endif  // EDGEFIT_SCENE_SCENE_H_
