@@ -1,0 +1,25 @@
+// Random joint values for the virtual benchmark postures (paper Sec. 7.3:
+// "three unique postures"), reproducible from a seed.
+#ifndef EDGEFIT_MODEL_RANDOM_JOINTS_H_
+#define EDGEFIT_MODEL_RANDOM_JOINTS_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "edgefit/model/kinematic_model.h"
+
+namespace edgefit {
+
+// A full joint vector (indexed like model.joints()): every independent joint
+// uniform inside its limits [lower, upper] (continuous joints, and revolute
+// joints without limits: [-pi, pi]); fixed joints 0; mimic and loop-closure
+// joints resolved by ResolveDependentJoints. When a loop closure cannot be
+// met for a draw, the independent joints are redrawn (the next draws of the
+// same seeded stream) up to 64 times; after that the last draw is returned
+// with its best-effort dependent values. Uses its own SplitMix64 stream, so
+// the result is the same on every platform and standard library.
+std::vector<double> RandomJointValues(const KinematicModel& model, uint64_t seed);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_MODEL_RANDOM_JOINTS_H_

@@ -1,0 +1,63 @@
+// Counter-based random numbers for the virtual scanner (internal).
+//
+// Every random draw is a pure function of (seed, stream, counter), so results
+// do not depend on the thread that computes them or on the order of the
+// work: the scan of a cell depends on (seed, scan, cell) only. SplitMix64
+// (Steele et al., "Fast splittable pseudorandom number generators", 2014) is
+// used as the mixing function; its output passes BigCrush as a hash of a
+// counter.
+#ifndef EDGEFIT_SRC_SCANNER_COUNTER_RNG_H_
+#define EDGEFIT_SRC_SCANNER_COUNTER_RNG_H_
+
+#include <cmath>
+#include <cstdint>
+
+namespace edgefit {
+namespace scanner_internal {
+
+// The SplitMix64 finaliser: a bijective 64-bit mix.
+inline uint64_t Mix64(uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+// Hash of (seed, stream, counter): distinct inputs give independent-looking outputs.
+inline uint64_t CounterHash(uint64_t seed, uint64_t stream, uint64_t counter) {
+  constexpr uint64_t kGolden = 0x9e3779b97f4a7c15ULL;
+  return Mix64(Mix64(Mix64(seed + kGolden) ^ (stream + 2 * kGolden)) ^ (counter + 3 * kGolden));
+}
+
+// Uniform in (0, 1) from the top 53 bits; never exactly 0 (safe for log).
+inline double UnitOpen(uint64_t bits) {
+  return (static_cast<double>(bits >> 11) + 0.5) * (1.0 / 9007199254740992.0);
+}
+
+// A standard normal draw from two hashes (Box-Muller, cosine branch).
+inline double StandardNormal(uint64_t bits_a, uint64_t bits_b) {
+  constexpr double kTwoPi = 6.283185307179586476925286766559;
+  return std::sqrt(-2.0 * std::log(UnitOpen(bits_a))) * std::cos(kTwoPi * UnitOpen(bits_b));
+}
+
+// A sequential SplitMix64 generator, for the few draws of joint values and
+// scanner placements (not per cell).
+class SplitMix64 {
+ public:
+  explicit SplitMix64(uint64_t seed) : state_(seed) {}
+  uint64_t Next() {
+    state_ += 0x9e3779b97f4a7c15ULL;
+    return Mix64(state_);
+  }
+  // Uniform in [lo, hi).
+  double Uniform(double lo, double hi) {
+    return lo + (hi - lo) * (static_cast<double>(Next() >> 11) * (1.0 / 9007199254740992.0));
+  }
+
+ private:
+  uint64_t state_;
+};
+
+}  // namespace scanner_internal
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SRC_SCANNER_COUNTER_RNG_H_

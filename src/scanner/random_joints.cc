@@ -1,0 +1,30 @@
+#include "edgefit/model/random_joints.h"
+
+#include <cmath>
+
+#include "counter_rng.h"
+
+namespace edgefit {
+
+std::vector<double> RandomJointValues(const KinematicModel& model, uint64_t seed) {
+  constexpr int kMaxDraws = 64;
+  constexpr double kPi = 3.14159265358979323846;
+  scanner_internal::SplitMix64 rng(seed);
+  const std::vector<int> independent = model.IndependentJoints();
+  std::vector<double> q;
+  for (int draw = 0; draw < kMaxDraws; ++draw) {
+    q = model.ZeroJoints();
+    for (int j : independent) {
+      const Joint& joint = model.joints()[j];
+      const bool bounded = joint.type != JointType::kContinuous && joint.has_limits &&
+                           joint.upper >= joint.lower;
+      const double lo = bounded ? joint.lower : -kPi;
+      const double hi = bounded ? joint.upper : kPi;
+      q[j] = rng.Uniform(lo, hi);
+    }
+    if (model.ResolveDependentJoints(&q).ok()) break;
+  }
+  return q;
+}
+
+}  // namespace edgefit

@@ -1,0 +1,211 @@
+#include "edgefit/scanner/truth.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "edgefit/core/atomic_file.h"
+#include "edgefit/scanner/label_file.h"
+
+namespace edgefit {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json MatrixJson(const Pose& T) {
+  Json rows = Json::array();
+  for (int r = 0; r < 4; ++r) {
+    Json row = Json::array();
+    for (int c = 0; c < 4; ++c) row.push_back(T.matrix()(r, c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// A 4x4 rigid transform from nested arrays; false on a wrong shape.
+bool PoseFromJson(const Json& j, Pose* T) {
+  if (!j.is_array() || j.size() != 4) return false;
+  Eigen::Matrix4d m;
+  for (int r = 0; r < 4; ++r) {
+    if (!j[r].is_array() || j[r].size() != 4) return false;
+    for (int c = 0; c < 4; ++c) {
+      if (!j[r][c].is_number()) return false;
+      m(r, c) = j[r][c].get<double>();
+    }
+  }
+  T->matrix() = m;
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, double>> NamedJointValues(const KinematicModel& model,
+                                                            const std::vector<double>& q) {
+  std::vector<std::pair<std::string, double>> named;
+  for (size_t j = 0; j < model.joints().size() && j < q.size(); ++j) {
+    if (model.joints()[j].IsMoving()) named.emplace_back(model.joints()[j].name, q[j]);
+  }
+  return named;
+}
+
+TruthSettings MakeTruthSettings(const VirtualScanOptions& options, int scanners,
+                                bool accessories, bool random_pose) {
+  TruthSettings s;
+  s.spacing = options.spacing;
+  s.noise_sigma = options.noise_sigma;
+  s.scanners = scanners;
+  s.accessories = accessories;
+  s.random_pose = random_pose;
+  s.full_dome = options.full_dome;
+  s.max_range = options.max_range;
+  s.true_edge_distance = options.true_edge_distance;
+  return s;
+}
+
+LabelCounts CountLabels(const VirtualScan& scan, const KinematicModel& model) {
+  LabelCounts counts;
+  std::vector<uint64_t> per_link(model.links().size(), 0);
+  for (const auto& labels : scan.labels) {
+    for (uint16_t label : labels) {
+      ++counts.cells;
+      const uint16_t cls = label & kLabelMask;
+      if (label & kTrueEdgeFlag) ++counts.true_edge;
+      if (cls == kLabelMissing) {
+        ++counts.missing;
+        continue;
+      }
+      ++counts.valid;
+      if (cls == kLabelBackground) {
+        ++counts.background;
+      } else if (cls == kLabelAccessory) {
+        ++counts.accessory;
+      } else {
+        ++counts.link;
+        const int link = LinkOfLabel(cls);
+        if (link >= 0 && static_cast<size_t>(link) < per_link.size()) ++per_link[link];
+      }
+    }
+  }
+  for (size_t k = 0; k < per_link.size(); ++k) {
+    counts.per_link.emplace_back(model.links()[k].name, per_link[k]);
+  }
+  return counts;
+}
+
+const char* LabelsFormatDescription() {
+  return "little-endian: 'EFLB', uint32 version=1, uint32 scans S, S x (uint32 rows, uint32 "
+         "cols), then per scan in file order rows*cols uint16 in the scan file's point order; "
+         "0 missing, 1 background, 2 accessory, 3+k link k (model links order), "
+         "| 0x8000 within true_edge_distance of a sharp link edge";
+}
+
+Status WriteTruthJson(const std::string& path, const Truth& truth) {
+  Json j;
+  j["model"] = {{"urdf", truth.urdf}, {"attachments", truth.attachments}};
+  Json joints = Json::object();
+  for (const auto& [name, value] : truth.joints) joints[name] = value;
+  j["joints"] = joints;
+  j["T_world_base"] = MatrixJson(truth.T_world_base);
+  j["base"] = {{"x", truth.base_x}, {"y", truth.base_y}, {"yaw", truth.base_yaw}};
+  Json scanners = Json::array();
+  for (const Pose& T : truth.T_world_scanners) scanners.push_back(MatrixJson(T));
+  j["scanners"] = scanners;
+  j["seed"] = truth.seed;
+  const TruthSettings& s = truth.settings;
+  j["settings"] = {{"spacing", s.spacing},           {"noise_sigma", s.noise_sigma},
+                   {"scanners", s.scanners},         {"accessories", s.accessories},
+                   {"random_pose", s.random_pose},   {"full_dome", s.full_dome},
+                   {"max_range", s.max_range},       {"true_edge_distance", s.true_edge_distance}};
+  const LabelCounts& c = truth.counts;
+  Json per_link = Json::object();
+  for (const auto& [name, n] : c.per_link) per_link[name] = n;
+  j["counts"] = {{"cells", c.cells},         {"valid", c.valid},
+                 {"missing", c.missing},     {"background", c.background},
+                 {"accessory", c.accessory}, {"link", c.link},
+                 {"true_edge", c.true_edge}, {"per_link", per_link}};
+  j["labels_format"] = LabelsFormatDescription();
+  return WriteStringAtomically(path, j.dump(2) + "\n");
+}
+
+Status ReadTruthJson(const std::string& path, Truth* truth) {
+  std::string text;
+  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(path, &text));
+  const Json j = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded() || !j.is_object()) return Status::Error(path + ": not a JSON object");
+  auto fail = [&path](const std::string& what) { return Status::Error(path + ": " + what); };
+  Truth t;
+  // Every accessor below checks the type first: nlohmann throws on a mismatch.
+  if (!j.contains("joints") || !j["joints"].is_object()) return fail("missing object 'joints'");
+  for (const auto& [name, value] : j["joints"].items()) {
+    if (!value.is_number()) return fail("joint '" + name + "' is not a number");
+    t.joints.emplace_back(name, value.get<double>());
+  }
+  if (!j.contains("T_world_base") || !PoseFromJson(j["T_world_base"], &t.T_world_base)) {
+    return fail("'T_world_base' is not a 4x4 matrix");
+  }
+  if (j.contains("model") && j["model"].is_object()) {
+    const Json& m = j["model"];
+    if (m.contains("urdf") && m["urdf"].is_string()) t.urdf = m["urdf"].get<std::string>();
+    if (m.contains("attachments") && m["attachments"].is_array()) {
+      for (const Json& a : m["attachments"]) {
+        if (a.is_string()) t.attachments.push_back(a.get<std::string>());
+      }
+    }
+  }
+  if (j.contains("base") && j["base"].is_object()) {
+    const Json& b = j["base"];
+    auto number = [&b](const char* key) {
+      return b.contains(key) && b[key].is_number() ? b[key].get<double>() : 0.0;
+    };
+    t.base_x = number("x");
+    t.base_y = number("y");
+    t.base_yaw = number("yaw");
+  }
+  if (j.contains("scanners") && j["scanners"].is_array()) {
+    for (const Json& m : j["scanners"]) {
+      Pose T;
+      if (!PoseFromJson(m, &T)) return fail("a scanner pose is not a 4x4 matrix");
+      t.T_world_scanners.push_back(T);
+    }
+  }
+  if (j.contains("seed") && j["seed"].is_number_unsigned()) t.seed = j["seed"].get<uint64_t>();
+  if (j.contains("settings") && j["settings"].is_object()) {
+    const Json& s = j["settings"];
+    auto number = [&s](const char* key, double fallback) {
+      return s.contains(key) && s[key].is_number() ? s[key].get<double>() : fallback;
+    };
+    auto flag = [&s](const char* key) {
+      return s.contains(key) && s[key].is_boolean() && s[key].get<bool>();
+    };
+    t.settings.spacing = number("spacing", 0.0);
+    t.settings.noise_sigma = number("noise_sigma", 0.0);
+    t.settings.scanners = static_cast<int>(number("scanners", 0.0));
+    t.settings.accessories = flag("accessories");
+    t.settings.random_pose = flag("random_pose");
+    t.settings.full_dome = flag("full_dome");
+    t.settings.max_range = number("max_range", 0.0);
+    t.settings.true_edge_distance = number("true_edge_distance", 0.0);
+  }
+  if (j.contains("counts") && j["counts"].is_object()) {
+    const Json& c = j["counts"];
+    auto count = [&c](const char* key) {
+      return c.contains(key) && c[key].is_number_unsigned() ? c[key].get<uint64_t>() : 0;
+    };
+    t.counts.cells = count("cells");
+    t.counts.valid = count("valid");
+    t.counts.missing = count("missing");
+    t.counts.background = count("background");
+    t.counts.accessory = count("accessory");
+    t.counts.link = count("link");
+    t.counts.true_edge = count("true_edge");
+    if (c.contains("per_link") && c["per_link"].is_object()) {
+      for (const auto& [name, n] : c["per_link"].items()) {
+        if (n.is_number_unsigned()) t.counts.per_link.emplace_back(name, n.get<uint64_t>());
+      }
+    }
+  }
+  *truth = std::move(t);
+  return Status::Ok();
+}
+
+}  // namespace edgefit
