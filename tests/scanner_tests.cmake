@@ -2,4 +2,11 @@
 edgefit_add_test(scanner_test
   SOURCES
     scanner/virtual_scanner_test.cc
+    scanner/scan_roundtrip_test.cc
+    scanner/truth_test.cc
+    scanner/placement_and_joints_test.cc
   LIBS edgefit::scanner edgefit::io OpenMP::OpenMP_CXX)
+# Posed URDF models, incl. the real KUKA in ${EDGEFIT_SHARED_DIR} (skipped when absent).
+edgefit_add_test(scanner_model_test
+  SOURCES scanner/model_scan_test.cc
+  LIBS edgefit::scanner)
