@@ -1,6 +1,7 @@
 #include "command_line.h"
 
 #include <gflags/gflags.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <iostream>
@@ -97,6 +98,11 @@ void PrintOverview() {
                "`edgefit <command> --help` lists a command's flags.\n"
                "Exit codes: 0 success, 2 bad input (one line on stderr says what and where),\n"
                "1 internal failure.\n";
+}
+
+void Progress(const std::string& message) {
+  static const bool enabled = ::isatty(STDERR_FILENO) != 0;
+  if (enabled) std::cerr << message << std::endl;
 }
 
 std::vector<std::string> SplitList(const std::string& list) {

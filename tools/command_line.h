@@ -41,10 +41,22 @@ void PrintCommandHelp(const Command& command);
 // `edgefit help`.
 void PrintOverview();
 
+// A progress line on stderr for long steps, only when stderr is a terminal
+// (so scripts and logs get exactly one line on failure).
+void Progress(const std::string& message);
+
 // Splits "a,b,,c" into {"a", "b", "c"}.
 std::vector<std::string> SplitList(const std::string& list);
 
 
 }  // namespace edgefit::tools
+
+// In a command's run function: on a failed Status, print it as bad input
+// (one line) and return exit code 2.
+#define EDGEFIT_RETURN_IF_ERROR_EXIT(command, expr)                           \
+  do {                                                                         \
+    const ::edgefit::Status edgefit_status_ = (expr);                          \
+    if (!edgefit_status_.ok()) return ::edgefit::tools::BadInput(command, edgefit_status_); \
+  } while (0)
 
 #endif  // EDGEFIT_TOOLS_COMMAND_LINE_H_

@@ -8,6 +8,7 @@
 namespace edgefit::tools {
 
 Command InfoCommand();
+Command ScanCommand();
 
 }  // namespace edgefit::tools
 

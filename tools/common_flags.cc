@@ -7,3 +7,4 @@ DEFINE_string(attach, "",
               "(origin in metres and radians), several as a comma list.");
 DEFINE_bool(json, false, "Print one JSON object on stdout instead of text.");
 DEFINE_int32(threads, 0, "Worker threads (0 = all cores). Results do not depend on it.");
+DEFINE_uint64(seed, 1, "Seed of every random choice; same seed and flags, same output.");

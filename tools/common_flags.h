@@ -10,5 +10,6 @@ DECLARE_string(urdf);
 DECLARE_string(attach);
 DECLARE_bool(json);
 DECLARE_int32(threads);
+DECLARE_uint64(seed);
 
 #endif  // EDGEFIT_TOOLS_COMMON_FLAGS_H_

@@ -13,6 +13,7 @@ namespace edgefit::tools {
 const std::vector<Command>& AllCommands() {
   static const std::vector<Command> kCommands = {
       InfoCommand(),
+      ScanCommand(),
   };
   return kCommands;
 }

@@ -1,77 +1,16 @@
 // The edgefit command's contract (DESIGN.md): exit 0 on success, 2 on bad
 // input with exactly one line on stderr that names the file and the problem.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <set>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <set>
 #include <string>
+
+#include "tools/cli_fixture.h"
 
 namespace {
 
+using edgefit_cli_test::CliTest;
+using edgefit_cli_test::RunResult;
 namespace fs = std::filesystem;
-
-struct RunResult {
-  int exit_code = -1;
-  bool signaled = false;
-  std::string out;
-  std::string err;
-};
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("edgefit_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Write(const std::string& name, const std::string& content) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-  }
-
-  RunResult Run(const std::string& args) {
-    const std::string out = (dir_ / "stdout.txt").string();
-    const std::string err = (dir_ / "stderr.txt").string();
-    const std::string cmd = std::string(EDGEFIT_BINARY) + " " + args + " >" + out + " 2>" + err;
-    const int status = std::system(cmd.c_str());
-    RunResult r;
-    r.signaled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) > 128);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = Slurp(out);
-    r.err = Slurp(err);
-    return r;
-  }
-
-  // Bad input: exit 2, nothing on stdout, one stderr line containing `needle`.
-  void ExpectBadInput(const std::string& args, const std::string& needle) {
-    const RunResult r = Run(args);
-    EXPECT_FALSE(r.signaled) << args;
-    EXPECT_EQ(r.exit_code, 2) << args << "\nstderr: " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\nstderr: " << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos)
-        << args << "\nexpected '" << needle << "' in: " << r.err;
-    EXPECT_TRUE(r.out.empty()) << args << "\nstdout: " << r.out;
-  }
-
-  fs::path dir_;
-};
 
 TEST_F(CliTest, HelpListsCommands) {
   const RunResult r = Run("help");

@@ -1,0 +1,90 @@
+// edgefit scan through the command line: outputs, determinism, read-back
+// through edgefit info, and bad input without partial output.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tools/cli_fixture.h"
+
+namespace {
+
+using edgefit_cli_test::CliTest;
+using edgefit_cli_test::RunResult;
+using edgefit_cli_test::Slurp;
+namespace fs = std::filesystem;
+
+const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
+
+class ScanCliTest : public CliTest {
+ protected:
+  // A small, fast scan of the balancer arm: coarse spacing, 2 scanners.
+  std::string SmallScanArgs(const std::string& out, const std::string& truth) {
+    return "scan --urdf=" + kModel + " --joints=joint_1=20deg,joint_2=-0.3 --seed=3 " +
+           "--scanners=2 --spacing_mm=6 --out=" + out + " --truth=" + truth;
+  }
+};
+
+TEST_F(ScanCliTest, WritesScanTruthAndLabelsThatReadBack) {
+  const std::string out = Path("arm.ptx"), truth = Path("arm_truth.json"),
+                    labels = Path("arm_labels.bin");
+  const RunResult r = Run(SmallScanArgs(out, truth) + " --labels=" + labels);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(out));
+  ASSERT_TRUE(fs::exists(labels));
+  const nlohmann::json t = nlohmann::json::parse(Slurp(truth));
+  EXPECT_NEAR(t["joints"]["joint_1"].get<double>(), 20.0 * M_PI / 180.0, 1e-12);
+  EXPECT_NEAR(t["joints"]["joint_2"].get<double>(), -0.3, 1e-12);
+  // Every non-fixed joint is in the truth, the loop-closure and mimic ones too.
+  for (const char* joint : {"cylinder_joint", "piston_joint", "rod_joint"}) {
+    EXPECT_TRUE(t["joints"].contains(joint)) << joint;
+  }
+  ASSERT_TRUE(t.contains("T_world_base"));
+  ASSERT_EQ(t["scanners"].size(), 2u);
+
+  // The scan reads back through edgefit info with two organized scans whose
+  // estimated lattice steps agree with each other's spacing at the asset.
+  const RunResult info = Run("info --json --scan=" + out);
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const nlohmann::json j = nlohmann::json::parse(info.out);
+  ASSERT_EQ(j["scans"].size(), 2u);
+  for (const auto& s : j["scans"]) {
+    EXPECT_GT(s["valid"].get<size_t>(), 500u);
+    ASSERT_FALSE(s["lattice"].is_null());
+    const double az = std::abs(s["lattice"]["azimuth_step_deg"].get<double>());
+    const double el = std::abs(s["lattice"]["elevation_step_deg"].get<double>());
+    EXPECT_NEAR(az, el, 0.01 * el);  // the scanner steps both angles alike
+  }
+}
+
+TEST_F(ScanCliTest, SameSeedSameBytesAnyThreadCount) {
+  const RunResult a = Run(SmallScanArgs(Path("a.ptx"), Path("a.json")) + " --threads=1");
+  const RunResult b = Run(SmallScanArgs(Path("b.ptx"), Path("b.json")) + " --threads=2");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(Slurp(Path("a.ptx")), Slurp(Path("b.ptx")));
+  const RunResult c = Run(SmallScanArgs(Path("c.ptx"), Path("c.json")) + " --seed=4");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_NE(Slurp(Path("a.ptx")), Slurp(Path("c.ptx")));
+}
+
+TEST_F(ScanCliTest, BadInputLeavesNoOutput) {
+  const std::string out = Path("x.ptx"), truth = Path("x.json");
+  ExpectBadInput("scan --out=" + out + " --truth=" + truth, "--urdf is required");
+  ExpectBadInput("scan --urdf=" + kModel + " --out=" + Path("x.xyz") + " --truth=" + truth,
+                 ".ptx or .pcd");
+  ExpectBadInput(SmallScanArgs(out, truth) + " --base=1,2", "--base");
+  ExpectBadInput("scan --urdf=" + kModel + " --joints=joint_7=0.1 --out=" + out +
+                     " --truth=" + truth,
+                 "joint_7");
+  ExpectBadInput("scan --urdf=" + kModel + " --joints=joint_2=90deg --out=" + out +
+                     " --truth=" + truth,
+                 "outside its limits");
+  ExpectBadInput("scan --urdf=" + kModel + " --random_pose --joints=joint_1=0 --out=" + out +
+                     " --truth=" + truth,
+                 "at most one of");
+  // The truth cannot be written: the scan that was already written is removed.
+  ExpectBadInput(SmallScanArgs(out, "/nonexistent_edgefit_dir/t.json"), "t.json");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(truth));
+}
+
+}  // namespace

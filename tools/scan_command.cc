@@ -1,0 +1,246 @@
+// edgefit scan: the virtual TLS scanner (paper Sec. 7.3). Poses a URDF model
+// (optionally with attachments and accessories) on the floor, adds a floor and
+// clutter, places scanners around it and casts one ray per grid cell.
+//   edgefit scan --urdf=F [--attach=...] (--joints=... | --posture=P.json:NAME |
+//                --random_pose) [--seed=N] [--base=x,y,yaw_deg] [--accessories]
+//                [--scanners=N] [--spacing_mm=1.7] [--noise_mm=1]
+//                --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "command_line.h"
+#include "commands.h"
+#include "common_flags.h"
+#include "edgefit/io/scan_io.h"
+#include "edgefit/model/composition.h"
+#include "edgefit/model/joint_values.h"
+#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/scanner_placement.h"
+#include "edgefit/scanner/label_file.h"
+#include "edgefit/scanner/truth.h"
+#include "edgefit/scanner/virtual_scanner.h"
+#include "edgefit/scene/accessories.h"
+#include "edgefit/scene/environment.h"
+#include "edgefit/scene/model_scene.h"
+
+DEFINE_string(joints, "",
+              "Joint values: name=value,... in rad / m, or with a unit: joint_2=-30deg, "
+              "slide=250mm. Joints not named stay at 0 (or their nearest limit).");
+DEFINE_string(posture, "", "A named posture: POSTURES.json:NAME (e.g. assets/robot/postures.json:home).");
+DEFINE_bool(random_pose, false, "Draw the independent joints uniformly inside their limits (--seed).");
+DEFINE_string(base, "0,0,0", "Base pose on the floor: x,y in m, yaw in degrees.");
+DEFINE_bool(accessories, false, "Add non-modelled accessories: harnesses, hoses, covers, brackets.");
+DEFINE_int32(scanners, 3, "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
+DEFINE_double(spacing_mm, 1.7, "Point spacing at the asset's distance [mm]; sets the angular step.");
+DEFINE_double(noise_mm, 1.0, "Gaussian range noise along the laser direction, sigma [mm].");
+DEFINE_double(max_range_m, 60.0, "Maximum range [m]; farther rays are misses.");
+DEFINE_bool(full_dome, false, "Scan 360 degrees in azimuth instead of a window around the asset.");
+DEFINE_int32(clutter, 4, "Clutter objects (pillars, boxes, a fence panel) away from the asset.");
+DEFINE_string(out, "", "Output scan: .ptx (all scans in one file) or .pcd (one file per scan: F_0.pcd, ...).");
+DEFINE_string(truth, "", "Output ground truth JSON: joints, T_world_base, scanners, settings.");
+DEFINE_string(labels, "", "Optional per-cell labels sidecar (format in include/edgefit/scanner/truth.h).");
+
+namespace edgefit::tools {
+namespace {
+
+// Independent random streams from one --seed.
+uint64_t SubSeed(uint64_t seed, uint64_t stream) {
+  uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (stream + 1);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+Status ParseBase(const std::string& text, double* x, double* y, double* yaw) {
+  const std::vector<std::string> parts = SplitList(text);
+  double v[3];
+  if (parts.size() != 3) return Status::Error("--base: expected x,y,yaw_deg, got '" + text + "'");
+  for (int i = 0; i < 3; ++i) {
+    char* end = nullptr;
+    v[i] = std::strtod(parts[i].c_str(), &end);
+    if (*end != '\0' || !std::isfinite(v[i])) {
+      return Status::Error("--base: '" + parts[i] + "' is not a number");
+    }
+  }
+  *x = v[0];
+  *y = v[1];
+  *yaw = v[2] * M_PI / 180.0;
+  return Status::Ok();
+}
+
+Status ChooseJoints(const KinematicModel& model, std::vector<double>* q) {
+  const int sources = !FLAGS_joints.empty() + !FLAGS_posture.empty() + FLAGS_random_pose;
+  if (sources > 1) return Status::Error("give at most one of --joints, --posture, --random_pose");
+  *q = model.ZeroJoints();
+  if (FLAGS_random_pose) {
+    *q = RandomJointValues(model, SubSeed(FLAGS_seed, 0));
+    return Status::Ok();
+  }
+  if (!FLAGS_posture.empty()) {
+    const size_t colon = FLAGS_posture.rfind(':');
+    if (colon == std::string::npos) return Status::Error("--posture: expected FILE.json:NAME");
+    EDGEFIT_RETURN_IF_ERROR(LoadNamedPosture(FLAGS_posture.substr(0, colon),
+                                             FLAGS_posture.substr(colon + 1), model, q));
+  }
+  EDGEFIT_RETURN_IF_ERROR(ParseJointAssignments(FLAGS_joints, model, q));
+  return model.ResolveDependentJoints(q).WithContext("joint values");
+}
+
+Status ValidateFlags() {
+  if (FLAGS_urdf.empty()) return Status::Error("--urdf is required");
+  if (FLAGS_out.empty()) return Status::Error("--out is required (.ptx or .pcd)");
+  if (FLAGS_truth.empty()) return Status::Error("--truth is required");
+  const std::string ext = FLAGS_out.size() >= 4 ? FLAGS_out.substr(FLAGS_out.size() - 4) : "";
+  if (ext != ".ptx" && ext != ".pcd") return Status::Error("--out must end in .ptx or .pcd");
+  if (FLAGS_scanners < 1 || FLAGS_scanners > 64) return Status::Error("--scanners must be 1..64");
+  if (!(FLAGS_spacing_mm > 0.05 && FLAGS_spacing_mm < 1000)) {
+    return Status::Error("--spacing_mm must be in (0.05, 1000)");
+  }
+  if (!(FLAGS_noise_mm >= 0 && FLAGS_noise_mm < 100)) return Status::Error("--noise_mm must be in [0, 100)");
+  if (!(FLAGS_max_range_m > 0)) return Status::Error("--max_range_m must be positive");
+  if (FLAGS_clutter < 0 || FLAGS_clutter > 100) return Status::Error("--clutter must be 0..100");
+  return Status::Ok();
+}
+
+// Writes the scan(s), the truth and the labels. Each file is atomic; if a
+// later one fails, the earlier ones are removed: no partial output.
+Status WriteOutputs(const Truth& truth, const VirtualScan& result) {
+  std::vector<std::string> written;
+  auto fail = [&written](const Status& status) {
+    for (const std::string& path : written) std::remove(path.c_str());
+    return status;
+  };
+  const bool pcd = FLAGS_out.substr(FLAGS_out.size() - 4) == ".pcd";
+  if (pcd && result.scans.scans.size() > 1) {
+    // A PCD file holds one scan: F.pcd -> F_0.pcd, F_1.pcd, ...
+    const std::string stem = FLAGS_out.substr(0, FLAGS_out.size() - 4);
+    for (size_t i = 0; i < result.scans.scans.size(); ++i) {
+      ScanSet one;
+      one.scans.push_back(result.scans.scans[i]);
+      const std::string path = stem + "_" + std::to_string(i) + ".pcd";
+      const Status s = WriteScans(path, one, WriteOptions());
+      if (!s.ok()) return fail(s);
+      written.push_back(path);
+    }
+  } else {
+    const Status s = WriteScans(FLAGS_out, result.scans, WriteOptions());
+    if (!s.ok()) return fail(s);
+    written.push_back(FLAGS_out);
+  }
+  Status s = WriteTruthJson(FLAGS_truth, truth);
+  if (!s.ok()) return fail(s);
+  written.push_back(FLAGS_truth);
+  if (!FLAGS_labels.empty()) {
+    s = WriteLabels(FLAGS_labels, result, FLAGS_out);
+    if (!s.ok()) return fail(s);
+  }
+  return Status::Ok();
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int RunScan(const Command& command) {
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ValidateFlags());
+  if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
+  const auto start = std::chrono::steady_clock::now();
+
+  std::vector<AttachSpec> specs;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseAttachSpecList(FLAGS_attach, &specs));
+  KinematicModel model;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
+  std::vector<double> q;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseJoints(model, &q));
+  double x = 0.0, y = 0.0, yaw = 0.0;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseBase(FLAGS_base, &x, &y, &yaw));
+  const Pose T_world_base = PoseFromXyYaw(x, y, yaw);
+  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
+  const Eigen::AlignedBox3d asset_box = model.BoundingBox(q, T_world_base);
+  if (asset_box.isEmpty()) return BadInput(command, FLAGS_urdf + ": the model has no geometry to scan");
+
+  Scene scene;
+  AddModelToScene(model, T_world_link, &scene);
+  if (FLAGS_accessories) {
+    AccessoryOptions accessory_options;
+    accessory_options.seed = SubSeed(FLAGS_seed, 1);
+    AddAccessories(model, q, T_world_link, accessory_options, &scene);
+  }
+  EnvironmentOptions environment_options;
+  environment_options.clutter_count = FLAGS_clutter;
+  environment_options.seed = SubSeed(FLAGS_seed, 2);
+  AddEnvironment(asset_box, environment_options, &scene);
+
+  ScannerPlacementOptions placement;
+  placement.count = FLAGS_scanners;
+  placement.seed = SubSeed(FLAGS_seed, 3);
+  const std::vector<Pose> T_world_scanners = PlaceScanners(asset_box, placement);
+
+  VirtualScanOptions scan_options;
+  scan_options.spacing = FLAGS_spacing_mm * 1e-3;
+  scan_options.noise_sigma = FLAGS_noise_mm * 1e-3;
+  scan_options.max_range = FLAGS_max_range_m;
+  scan_options.full_dome = FLAGS_full_dome;
+  scan_options.seed = SubSeed(FLAGS_seed, 4);
+  // The window covers every non-background mesh: the model and its accessories.
+  Progress("scan: casting rays from " + std::to_string(T_world_scanners.size()) + " scanners");
+  VirtualScan result;
+  const auto cast_start = std::chrono::steady_clock::now();
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                               ScanScene(scene, T_world_scanners, scan_options, &result));
+  const double cast_seconds = SecondsSince(cast_start);
+
+  Truth truth;
+  truth.urdf = FLAGS_urdf;
+  for (const AttachSpec& spec : specs) truth.attachments.push_back(spec.path + "@" + spec.parent_link);
+  truth.joints = NamedJointValues(model, q);
+  truth.T_world_base = T_world_base;
+  truth.base_x = x;
+  truth.base_y = y;
+  truth.base_yaw = yaw;
+  truth.T_world_scanners = T_world_scanners;
+  truth.seed = FLAGS_seed;
+  truth.settings = MakeTruthSettings(scan_options, FLAGS_scanners, FLAGS_accessories,
+                                     FLAGS_random_pose);
+  truth.counts = CountLabels(result, model);
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, WriteOutputs(truth, result));
+
+  size_t valid = result.scans.TotalValid();
+  std::printf("scanned %zu rays from %zu scanners: %zu points (%.1f%%) in %.2f s (%.1f M rays/s); "
+              "total %.2f s\n",
+              result.rays, T_world_scanners.size(), valid,
+              100.0 * static_cast<double>(valid) / std::max<size_t>(1, result.rays), cast_seconds,
+              static_cast<double>(result.rays) / std::max(1e-9, cast_seconds) * 1e-6,
+              SecondsSince(start));
+  std::printf("wrote %s, %s%s%s\n", FLAGS_out.c_str(), FLAGS_truth.c_str(),
+              FLAGS_labels.empty() ? "" : ", ", FLAGS_labels.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+Command ScanCommand() {
+  return {"scan",
+          "virtual TLS scanner: a posed model, accessories and a scene to PTX/PCD + truth JSON",
+          "Usage:\n"
+          "  edgefit scan --urdf=F [--attach=eef.urdf@link] (--joints=j=v,... | "
+          "--posture=P.json:NAME | --random_pose --seed=N)\n"
+          "               [--base=x,y,yaw_deg] [--accessories] [--scanners=3] [--spacing_mm=1.7]\n"
+          "               [--noise_mm=1] --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]\n"
+          "Example:\n"
+          "  edgefit scan --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
+          "    --posture=assets/robot/postures.json:weld --accessories --seed=7 \\\n"
+          "    --out=robot.ptx --truth=robot_truth.json --labels=robot_labels.bin",
+          {"urdf", "attach", "joints", "posture", "random_pose", "seed", "base", "accessories",
+           "scanners", "spacing_mm", "noise_mm", "max_range_m", "full_dome", "clutter", "out",
+           "truth", "labels", "threads"},
+          &RunScan};
+}
+
+}  // namespace edgefit::tools
