@@ -72,12 +72,18 @@ Status ParseBase(const std::string& text, double* x, double* y, double* yaw) {
   return Status::Ok();
 }
 
-Status ChooseJoints(const KinematicModel& model, std::vector<double>* q) {
+Status ChooseJoints(const KinematicModel& model, const Pose& T_world_base,
+                    std::vector<double>* q) {
   const int sources = !FLAGS_joints.empty() + !FLAGS_posture.empty() + FLAGS_random_pose;
   if (sources > 1) return Status::Error("give at most one of --joints, --posture, --random_pose");
   *q = model.ZeroJoints();
   if (FLAGS_random_pose) {
-    *q = RandomJointValues(model, SubSeed(FLAGS_seed, 0));
+    // The floor of the scene is z = 0 (EnvironmentOptions::floor_z).
+    if (!RandomJointValuesAboveFloor(model, T_world_base, /*floor_z=*/0.0,
+                                     SubSeed(FLAGS_seed, 0), q)) {
+      return Status::Error(FLAGS_urdf + ": no random posture of this model stays above the floor "
+                           "(is the base below z = 0?)");
+    }
     return Status::Ok();
   }
   if (!FLAGS_posture.empty()) {
@@ -155,11 +161,11 @@ int RunScan(const Command& command) {
   KinematicModel model;
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
-  std::vector<double> q;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseJoints(model, &q));
   double x = 0.0, y = 0.0, yaw = 0.0;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseBase(FLAGS_base, &x, &y, &yaw));
   const Pose T_world_base = PoseFromXyYaw(x, y, yaw);
+  std::vector<double> q;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseJoints(model, T_world_base, &q));
   const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
   const Eigen::AlignedBox3d asset_box = model.BoundingBox(q, T_world_base);
   if (asset_box.isEmpty()) return BadInput(command, FLAGS_urdf + ": the model has no geometry to scan");

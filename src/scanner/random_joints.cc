@@ -27,4 +27,16 @@ std::vector<double> RandomJointValues(const KinematicModel& model, uint64_t seed
   return q;
 }
 
+bool RandomJointValuesAboveFloor(const KinematicModel& model, const Pose& T_world_base,
+                                 double floor_z, uint64_t seed, std::vector<double>* q,
+                                 double tolerance, int max_draws) {
+  scanner_internal::SplitMix64 seeds(seed);
+  for (int draw = 0; draw < max_draws; ++draw) {
+    *q = RandomJointValues(model, draw == 0 ? seed : seeds.Next());
+    const Eigen::AlignedBox3d box = model.BoundingBox(*q, T_world_base);
+    if (box.isEmpty() || box.min().z() >= floor_z - tolerance) return true;
+  }
+  return false;
+}
+
 }  // namespace edgefit
