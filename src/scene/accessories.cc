@@ -33,7 +33,8 @@ void Add(const std::string& kind, TriangleMesh mesh, double radius, std::vector<
   record.scene_index = static_cast<int>(scene->meshes.size());
   record.radius = radius;
   record.links = std::move(links);
-  record.area = mesh.SurfaceArea();
+  // Covers count their top sheet only: the underside faces the link.
+  record.area = kind == "cover" ? 0.5 * mesh.SurfaceArea() : mesh.SurfaceArea();
   SceneMesh scene_mesh;
   scene_mesh.mesh_world = std::move(mesh);
   scene_mesh.label = kLabelAccessory;
@@ -60,8 +61,8 @@ bool AccessoryOptions::IsValid(std::string* error) const {
              !ValidRange(bracket_size_min, bracket_size_max)) {
     *error = "accessory size ranges need 0 < min <= max [m]";
   } else if (!(sag_fraction_min >= 0.0) || !(sag_fraction_min <= sag_fraction_max) ||
-             !(sag_fraction_max <= 1.0)) {
-    *error = "need 0 <= sag_fraction_min <= sag_fraction_max <= 1";
+             !(sag_fraction_max <= 1.0) || !(sag_max >= 0.0)) {
+    *error = "need 0 <= sag_fraction_min <= sag_fraction_max <= 1 and sag_max >= 0";
   } else if (bracket_size_min <= 0.01) {
     *error = "bracket_size_min must exceed 0.01 m (the plate thickness)";
   } else if (!(clearance >= 0.0) || !(sample_spacing > 0.0)) {

@@ -43,12 +43,14 @@ bool BuildCover(const PartContext& context, int link, SceneRandom* rng, Triangle
   std::vector<Eigen::Vector3d> p_link;
   for (const Eigen::Vector3d& p : cloud.p_world) p_link.push_back(T_link_world * p);
 
-  for (int attempt = 0; attempt < 20; ++attempt) {
+  for (int attempt = 0; attempt < 30; ++attempt) {
     Eigen::Vector3d d, e1, e2;
     SideFrame(rng->Int(0, 5), &d, &e1, &e2);
     const double offset = rng->Uniform(options.cover_offset_min, options.cover_offset_max);
     const double thickness = rng->Uniform(options.cover_thickness_min, options.cover_thickness_max);
-    const double f1 = rng->Uniform(0.5, 0.85), f2 = rng->Uniform(0.5, 0.85);
+    // Later attempts try smaller patches, which fit between neighbours.
+    const double f_lo = attempt < 15 ? 0.5 : 0.3, f_hi = attempt < 15 ? 0.85 : 0.5;
+    const double f1 = rng->Uniform(f_lo, f_hi), f2 = rng->Uniform(f_lo, f_hi);
     const double c1 = rng->Uniform(), c2 = rng->Uniform();
     // Never under a link that faces the floor from above: real covers are
     // not hung beneath the base.
@@ -60,7 +62,10 @@ bool BuildCover(const PartContext& context, int link, SceneRandom* rng, Triangle
       lo2 = std::min(lo2, p.dot(e2)), hi2 = std::max(hi2, p.dot(e2));
     }
     const double size1 = f1 * (hi1 - lo1), size2 = f2 * (hi2 - lo2);
-    if (size1 < 0.1 || size2 < 0.1) continue;  // too small to be a cover
+    if (size1 < 0.1 || size2 < 0.1) {
+      VLOG(2) << "cover on link " << link << ": patch too small";
+      continue;  // too small to be a cover
+    }
     const double x0 = lo1 + c1 * (hi1 - lo1 - size1), y0 = lo2 + c2 * (hi2 - lo2 - size2);
     const int nu = std::clamp(static_cast<int>(std::ceil(size1 / kCell)), 2, kMaxCells);
     const int nv = std::clamp(static_cast<int>(std::ceil(size2 / kCell)), 2, kMaxCells);
@@ -102,8 +107,9 @@ bool BuildCover(const PartContext& context, int link, SceneRandom* rng, Triangle
     };
     const std::vector<double> height = filter(filter(raw, true), false);
 
-    // Another link (or the floor side of the base) inside the slab between
-    // this link's surface and the cover's top would be cut: try elsewhere.
+    // Another link's surface crossing the sheet (within 10 mm below it to
+    // 30 mm above it) would be cut: try elsewhere. A neighbour tucked in
+    // the gap under the sheet or clear above it is left alone.
     bool blocked = false;
     for (size_t k = 0; k < context.model->links().size() && !blocked; ++k) {
       if (static_cast<int>(k) == link) continue;
@@ -113,14 +119,17 @@ bool BuildCover(const PartContext& context, int link, SceneRandom* rng, Triangle
         int i, j;
         if (!cell_of(p, &i, &j)) continue;
         const double h = p.dot(d);
-        if (h >= raw[i + j * nu] - 0.005 &&
-            h <= height[i + j * nu] + offset + thickness + 0.05) {
+        if (h >= height[i + j * nu] + offset - 0.01 &&
+            h <= height[i + j * nu] + offset + thickness + 0.03) {
           blocked = true;
           break;
         }
       }
     }
-    if (blocked) continue;
+    if (blocked) {
+      VLOG(2) << "cover on link " << link << ": patch blocked by another link";
+      continue;
+    }
 
     // Corner heights: the highest adjacent cell, plus the offset.
     std::vector<double> bottom((nu + 1) * (nv + 1));

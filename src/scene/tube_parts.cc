@@ -59,24 +59,43 @@ Eigen::Vector3d SideDirection(const Eigen::Vector3d& u, const Eigen::Vector3d& p
   return s.norm() > 0.1 ? Eigen::Vector3d(s.normalized()) : u.unitOrthogonal();
 }
 
-// Cable points along one link: at each station t of the run, the outermost
-// link surface in direction s within the slab |t' - t| <= half_width, plus
-// `lift` [m]. Above that level the slab holds no link surface, so the cable
-// cannot cut the link between stations either.
+// Cable points along one link. Stations are spread over the fractions
+// [t0, t1] of the part of the run the link's surface actually covers (a
+// link frame can sit far from its mesh). At each station the slab
+// |t' - t| <= half_width of surface samples gives the point: the outermost
+// sample along s, lifted by `lift` [m]. Beyond that level the slab holds no
+// link surface, so the cable cannot cut the link there.
 std::vector<Eigen::Vector3d> RunPoints(const SurfaceCloud& cloud, const LinkRun& run,
                                        const Eigen::Vector3d& s, double t0, double t1,
                                        int stations, double lift) {
   std::vector<Eigen::Vector3d> points;
-  const double spacing = stations > 1 ? (t1 - t0) * run.length / (stations - 1) : run.length;
-  const double half_width = std::max(0.6 * spacing, 0.06);
+  if (cloud.p_world.empty()) return points;
+  double lo = 1e9, hi = -1e9;
+  for (const Eigen::Vector3d& p : cloud.p_world) {
+    lo = std::min(lo, (p - run.a).dot(run.u));
+    hi = std::max(hi, (p - run.a).dot(run.u));
+  }
+  if (std::min(hi, run.length) > std::max(lo, 0.0)) {
+    lo = std::max(lo, 0.0);
+    hi = std::min(hi, run.length);
+  }
+  const double covered = hi - lo;
+  const double spacing = stations > 1 ? (t1 - t0) * covered / (stations - 1) : covered;
+  const double half_width = std::max(0.6 * spacing, 0.04);
   for (int i = 0; i < stations; ++i) {
     const double f = stations > 1 ? t0 + (t1 - t0) * i / (stations - 1) : 0.5 * (t0 + t1);
-    const Eigen::Vector3d c = run.a + f * run.length * run.u;
+    const double t = lo + f * covered;
+    // The outermost sample in the slab: the cable rests on the link there.
     double height = -1e9;
+    Eigen::Vector3d outermost = Eigen::Vector3d::Zero();
     for (const Eigen::Vector3d& p : cloud.p_world) {
-      if (std::abs((p - c).dot(run.u)) <= half_width) height = std::max(height, (p - c).dot(s));
+      if (std::abs((p - run.a).dot(run.u) - t) <= half_width && p.dot(s) > height) {
+        height = p.dot(s);
+        outermost = p;
+      }
     }
-    if (height > -1e8) points.push_back(c + (height + lift) * s);
+    if (height == -1e9) continue;
+    points.push_back(outermost + lift * s);
   }
   return points;
 }
@@ -125,16 +144,27 @@ bool BuildHarness(const PartContext& context, int first, int last, SceneRandom* 
     const int link = context.chain[i];
     const LinkRun run = MakeRun(context, i);
     const Eigen::Vector3d s = SideDirection(run.u, preferred);
-    const int stations = run.length < 0.15 ? 1 : std::max(2, static_cast<int>(std::ceil(0.7 * run.length / 0.25)) + 1);
-    const std::vector<Eigen::Vector3d> points =
+    const int stations =
+        run.length < 0.15 ? 1 : std::max(2, static_cast<int>(std::ceil(0.7 * run.length / 0.2)) + 1);
+    std::vector<Eigen::Vector3d> points =
         RunPoints(context.clearance->LinkCloud(link), run, s, 0.15, 0.85, stations, lift);
+    // Continue from where the cable is: a link whose frame sits at its far
+    // end (a forearm hung from the wrist joint) is run backwards.
+    if (!control.empty() && !points.empty() &&
+        (points.front() - control.back()).norm() > (points.back() - control.back()).norm()) {
+      std::reverse(points.begin(), points.end());
+    }
+    VLOG(2) << "harness run link " << link << " a " << run.a.transpose() << " u "
+            << run.u.transpose() << " length " << run.length << " side " << s.transpose()
+            << " points " << points.size();
     if (points.empty()) continue;
     if (!control.empty()) {
       // The span across the joint hangs: droop sag = fraction * chord.
       const Eigen::Vector3d& a = control.back();
       const Eigen::Vector3d& b = points.front();
-      const double sag =
-          rng->Uniform(options.sag_fraction_min, options.sag_fraction_max) * (b - a).norm();
+      const double sag = std::min(
+          options.sag_max,
+          rng->Uniform(options.sag_fraction_min, options.sag_fraction_max) * (b - a).norm());
       const std::vector<Eigen::Vector3d> span = SaggingSpan(a, b, sag, down, 5);
       control.insert(control.end(), span.begin() + 1, span.end() - 1);
     }
@@ -145,6 +175,12 @@ bool BuildHarness(const PartContext& context, int first, int last, SceneRandom* 
   if (links->size() < 2) return false;
   const std::vector<Eigen::Vector3d> curve =
       FitCenterline(context, control, *radius + options.clearance);
+  if (VLOG_IS_ON(2)) {
+    double length = 0.0;
+    for (size_t i = 1; i < curve.size(); ++i) length += (curve[i] - curve[i - 1]).norm();
+    VLOG(2) << "harness length " << length << " m";
+    for (const Eigen::Vector3d& p : control) VLOG(2) << "harness control " << p.transpose();
+  }
   *mesh = MakeTubeMesh(curve, *radius, options.tube_segments);
   if (mesh->empty()) return false;
   // Clamp sites on the fitted line: the nearest curve point and its tangent.

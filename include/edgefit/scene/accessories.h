@@ -41,6 +41,7 @@ struct AccessoryOptions {
   double harness_radius_max = 0.025;  // [m]
   double sag_fraction_min = 0.05;     // droop / span across a joint
   double sag_fraction_max = 0.15;
+  double sag_max = 0.15;  // [m] cap on the droop of long spans
   // A clamp bracket under a harness on every second station of each link.
   bool harness_clamps = true;
 
@@ -52,7 +53,8 @@ struct AccessoryOptions {
 
   // Covers: the first on the root link (if it has a mesh), the others on
   // the largest main-chain links. Each covers a seeded patch of 50-85 % x
-  // 50-85 % of one side of the link's box.
+  // 50-85 % of one side of the link's box (30-50 % when larger patches
+  // would cut a neighbouring link).
   int cover_count = 2;
   double cover_thickness_min = 0.002;  // [m]
   double cover_thickness_max = 0.004;  // [m]
@@ -79,7 +81,7 @@ struct AccessoryRecord {
   int scene_index = -1;    // index into Scene::meshes
   double radius = 0.0;     // [m] tube radius (harness, hose), else 0
   std::vector<int> links;  // links it is attached to, in chain order
-  double area = 0.0;       // [m^2]
+  double area = 0.0;       // [m^2] outward area (a cover's top sheet only)
 };
 
 struct AccessoryReport {
@@ -87,7 +89,7 @@ struct AccessoryReport {
   int hoses = 0;
   int covers = 0;
   int brackets = 0;
-  double area = 0.0;  // [m^2] total accessory surface
+  double area = 0.0;  // [m^2] sum of the records' outward areas
   std::vector<AccessoryRecord> records;
 
   // One line, e.g. "2 harnesses, 1 hose, 2 covers, 9 brackets, 1.23 m^2".
