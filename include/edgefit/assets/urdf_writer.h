@@ -1,0 +1,55 @@
+// Writing URDF text for the generated benchmark models: links with one mesh
+// visual each, joints with limits, and the edgefit <loop_closure> extension
+// (loop_closure.h). Numbers are printed with a fixed format ("%.9g", -0
+// written as 0), so the same model always gives the same bytes.
+#ifndef EDGEFIT_ASSETS_URDF_WRITER_H_
+#define EDGEFIT_ASSETS_URDF_WRITER_H_
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/model/loop_closure.h"
+
+namespace edgefit {
+
+struct UrdfJointSpec {
+  std::string name;
+  JointType type = JointType::kFixed;
+  std::string parent, child;                        // link names
+  Pose T_parent_joint = Pose::Identity();           // URDF <origin>
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  // joint frame (moving joints)
+  double lower = 0.0, upper = 0.0;                  // [rad] or [m] (revolute, prismatic)
+  double effort = 1000.0;                           // [N m] or [N]
+  double velocity = 1.0;                            // [rad/s] or [m/s]
+};
+
+class UrdfWriter {
+ public:
+  // `comment` (may be empty) is written as an XML comment under the header.
+  UrdfWriter(std::string robot_name, std::string comment);
+
+  // A link whose visual is the mesh file `mesh_uri` (relative to the URDF)
+  // at the link origin, or no visual when `mesh_uri` is empty (a frame).
+  // `rgba` sets a named material colour for viewers.
+  void AddLink(const std::string& name, const std::string& mesh_uri,
+               const Eigen::Vector4d& rgba = Eigen::Vector4d(0.7, 0.7, 0.7, 1.0));
+  void AddJoint(const UrdfJointSpec& joint);
+  void AddLoopClosure(const LoopClosureSpec& closure);
+
+  std::string ToString() const;
+
+ private:
+  std::string name_;
+  std::string comment_;
+  std::vector<std::string> links_, joints_, closures_;
+};
+
+// "%.9g" with -0 printed as 0.
+std::string FormatUrdfNumber(double value);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_ASSETS_URDF_WRITER_H_
