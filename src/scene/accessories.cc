@@ -57,7 +57,7 @@ bool AccessoryOptions::IsValid(std::string* error) const {
              !ValidRange(hose_radius_min, hose_radius_max) ||
              !ValidRange(hose_loop_min, hose_loop_max) ||
              !ValidRange(cover_thickness_min, cover_thickness_max) ||
-             !ValidRange(cover_offset_min, cover_offset_max) ||
+             !ValidRange(cover_offset_min, cover_offset_max) || !(cover_max_side > 0.0) ||
              !ValidRange(bracket_size_min, bracket_size_max)) {
     *error = "accessory size ranges need 0 < min <= max [m]";
   } else if (!(sag_fraction_min >= 0.0) || !(sag_fraction_min <= sag_fraction_max) ||

@@ -36,6 +36,14 @@ bool Clear(const PartContext& context, const TriangleMesh& mesh) {
   return true;
 }
 
+// Largest leg for a bracket on `link`: the option, but at most 3/4 of the
+// link's smallest extent, so small links get small brackets.
+double MaxLeg(const PartContext& context, int link) {
+  const AccessoryOptions& options = *context.options;
+  const double extent = context.model->links()[link].mesh.BoundingBox().sizes().minCoeff();
+  return std::max(options.bracket_size_min, std::min(options.bracket_size_max, 0.75 * extent));
+}
+
 }  // namespace
 
 bool BuildClampBracket(const PartContext& context, const ClampSite& site, SceneRandom* rng,
@@ -52,11 +60,12 @@ bool BuildClampBracket(const PartContext& context, const ClampSite& site, SceneR
   }
   const Eigen::Vector3d& n = cloud.n_world[foot];
   const double thickness = rng->Uniform(0.004, 0.008);
-  const double width = rng->Uniform(options.bracket_size_min, std::min(0.08, options.bracket_size_max));
-  const double plate = rng->Uniform(options.bracket_size_min, options.bracket_size_max);
+  const double max_leg = MaxLeg(context, site.link);
+  const double width = rng->Uniform(options.bracket_size_min, std::min(0.08, max_leg));
+  const double plate = rng->Uniform(options.bracket_size_min, max_leg);
   // The upright leg reaches past the tube centre, as a clamp holder does.
   const double height = std::clamp((site.p_world - cloud.p_world[foot]).dot(n) + site.radius,
-                                   options.bracket_size_min, options.bracket_size_max);
+                                   options.bracket_size_min, max_leg);
   // The upright stands beside the tube: offset sideways by radius + 4 mm.
   const Pose T0 = BracketFrame(cloud.p_world[foot] + kLiftOff * n, n, site.tangent_world);
   const Pose T_world_bracket =
@@ -79,9 +88,10 @@ bool BuildFreeBracket(const PartContext& context, int link, SceneRandom* rng, Tr
     const Eigen::Vector3d& n = cloud.n_world[i];
     const Eigen::Vector3d along(rng->Uniform(-1, 1), rng->Uniform(-1, 1), rng->Uniform(-1, 1));
     const double thickness = rng->Uniform(0.004, 0.01);
-    const double width = rng->Uniform(options.bracket_size_min, options.bracket_size_max);
-    const double plate = rng->Uniform(options.bracket_size_min, options.bracket_size_max);
-    const double height = rng->Uniform(options.bracket_size_min, options.bracket_size_max);
+    const double max_leg = MaxLeg(context, link);
+    const double width = rng->Uniform(options.bracket_size_min, max_leg);
+    const double plate = rng->Uniform(options.bracket_size_min, max_leg);
+    const double height = rng->Uniform(options.bracket_size_min, max_leg);
     *mesh = MakeLBracketMesh(BracketFrame(cloud.p_world[i] + kLiftOff * n, n, along), width, plate,
                              height, thickness);
     if (Clear(context, *mesh)) return true;

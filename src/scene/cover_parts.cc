@@ -7,7 +7,8 @@
 // The average of the max-filter is still >= the raw height of the centre
 // cell (every neighbour's max includes it), so the sheet stays outside the
 // sampled surface while losing the stair steps. Cells the link does not
-// reach take the lowest height of the patch, so the sheet hangs down there.
+// reach take the lowest height of the patch, so the sheet hangs down there,
+// but never more than kMaxDepth below the highest cell.
 #include <glog/logging.h>
 
 #include <algorithm>
@@ -22,6 +23,7 @@ namespace {
 
 constexpr double kCell = 0.02;  // [m] grid cell edge, about two sample spacings
 constexpr int kMaxCells = 60;   // per side of the patch
+constexpr double kMaxDepth = 0.25;  // [m] deepest a sheet bends below its highest cell
 
 // Side d and in-plane axes (e1, e2) with e1 x e2 = d, all link-frame axes.
 void SideFrame(int side, Eigen::Vector3d* d, Eigen::Vector3d* e1, Eigen::Vector3d* e2) {
@@ -61,7 +63,8 @@ bool BuildCover(const PartContext& context, int link, SceneRandom* rng, Triangle
       lo1 = std::min(lo1, p.dot(e1)), hi1 = std::max(hi1, p.dot(e1));
       lo2 = std::min(lo2, p.dot(e2)), hi2 = std::max(hi2, p.dot(e2));
     }
-    const double size1 = f1 * (hi1 - lo1), size2 = f2 * (hi2 - lo2);
+    const double size1 = std::min(options.cover_max_side, f1 * (hi1 - lo1));
+    const double size2 = std::min(options.cover_max_side, f2 * (hi2 - lo2));
     if (size1 < 0.1 || size2 < 0.1) {
       VLOG(2) << "cover on link " << link << ": patch too small";
       continue;  // too small to be a cover
@@ -87,6 +90,11 @@ bool BuildCover(const PartContext& context, int link, SceneRandom* rng, Triangle
     for (double h : raw) if (h > kEmpty) lowest = std::min(lowest, h);
     if (!std::isfinite(lowest)) continue;
     for (double& h : raw) if (h == kEmpty) h = lowest;
+    // A sheet bends over the link, it does not dive into deep recesses or
+    // run down a long rail seen end-on: no cell lies more than kMaxDepth
+    // below the highest (raising a cell keeps it outside the surface).
+    const double highest = *std::max_element(raw.begin(), raw.end());
+    for (double& h : raw) h = std::max(h, highest - kMaxDepth);
     // Max-filter then box-average over 3x3 (clamped at the border).
     auto filter = [&](const std::vector<double>& in, bool take_max) {
       std::vector<double> out(in.size());

@@ -59,7 +59,7 @@ TEST_F(AccessoriesTest, AreaIsAMeaningfulFractionOfTheRobot) {
   const PosedScene posed = MakeAccessoryScene(model_, q_, AccessoryOptions());
   const double fraction = posed.report.area / posed.link_area;
   EXPECT_GE(fraction, 0.05);
-  EXPECT_LE(fraction, 0.40);  // a small model: the tubes weigh more
+  EXPECT_LE(fraction, 0.45);  // a small model (1.8 m^2): tubes and clamps weigh more
 }
 
 TEST_F(AccessoriesTest, DeterministicForASeedDifferentForAnother) {

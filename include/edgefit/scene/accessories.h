@@ -60,6 +60,9 @@ struct AccessoryOptions {
   double cover_thickness_max = 0.004;  // [m]
   double cover_offset_min = 0.005;     // [m] gap above the link surface
   double cover_offset_max = 0.020;     // [m]
+  // [m] Longest side of a cover patch: a long rail gets a cover over part
+  // of it, not a sheet over all of it.
+  double cover_max_side = 1.2;
 
   int bracket_count = 4;         // Free brackets, besides harness clamps.
   double bracket_size_min = 0.05;  // [m] leg length and width
