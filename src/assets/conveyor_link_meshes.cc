@@ -15,7 +15,7 @@ namespace edgefit {
 namespace assets_internal {
 namespace {
 
-constexpr int kPinSegments = 32;
+constexpr int kPinSegments = 48;
 
 // An arm from z = 0 up to the pin apex at `tip_height` [m]: tapered post,
 // then a cone whose apex is the arm's single highest point.
@@ -85,7 +85,7 @@ TriangleMesh Carriage() {
   }
   m.Append(MakePerforatedPlate(deck), At(0, 0, 0.095));
   for (double y : {-L.rod_y, L.rod_y}) {  // lifter guide tubes around the rod holes
-    m.Append(MakeTube(0.035, 0.05, L.lifter_z - 0.115, 0.004, 48), At(0, y, 0.115));
+    m.Append(MakeTube(0.035, 0.05, L.lifter_z - 0.115, 0.004, 64), At(0, y, 0.115));
   }
   m.Append(MakeChamferedBox({0.18, 0.22, 0.16}, 0.012), At(0, 0, 0.195));  // lift gearbox
   MotorHousingOptions motor;
@@ -100,7 +100,7 @@ TriangleMesh Lifter(bool with_fixed_arms) {
   const ConveyorLayout& L = ConveyorLayoutValues();
   TriangleMesh m;
   for (double y : {-L.rod_y, L.rod_y}) {
-    m.Append(ChamferedCylinder(0.03, L.lifter_z + 0.05, 0.003, 48), At(0, y, -L.lifter_z));
+    m.Append(ChamferedCylinder(0.03, L.lifter_z + 0.05, 0.003, 64), At(0, y, -L.lifter_z));
   }
   m.Append(MakeChamferedBox({0.24, 1.2, 0.08}, 0.01), At(0, 0, L.clamp_z - 0.04));
   if (with_fixed_arms) {

@@ -122,7 +122,7 @@ std::vector<NamedPosture> RobotPostures() {
   };
   // Upright with the gun pointing down; welding low and to the side; arm
   // raised and turned back, reaching over.
-  return {posture("home", {0.0, 0.0, -0.25, 0.0, 1.35, 0.0, 0.02}),
+  return {posture("home", {0.0, 0.0, -0.45, 0.0, 1.55, 0.0, 0.02}),
           posture("weld_low", {0.7, 0.45, 0.0, -0.5, 0.6, 0.6, 0.09}),
           posture("raised", {-1.2, -0.35, -0.55, 0.6, 1.5, -1.0, 0.05})};
 }

@@ -16,8 +16,8 @@ namespace edgefit {
 namespace assets_internal {
 namespace {
 
-constexpr int kLargeSegments = 96;  // Bosses of ~0.2 m radius: 3.75 deg facets.
-constexpr int kSmallSegments = 48;  // Pins and small motors.
+constexpr int kLargeSegments = 128;  // Bosses of ~0.2 m radius: 2.8 deg facets, 9 mm chords.
+constexpr int kSmallSegments = 64;  // Pins, eyes and small motors.
 
 Pose Yawed(double angle, const Pose& T) {
   return Pose(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ())) * T;
@@ -32,7 +32,7 @@ MotorHousingOptions Motor(double radius, double length) {
   o.chamfer = 0.08 * radius;
   o.rib_height = 0.15 * radius;
   o.rib_width = 0.1 * radius;
-  o.segments = radius > 0.06 ? 64 : kSmallSegments;
+  o.segments = radius > 0.06 ? 96 : kSmallSegments;
   return o;
 }
 

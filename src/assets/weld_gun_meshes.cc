@@ -14,7 +14,7 @@ namespace edgefit {
 namespace assets_internal {
 namespace {
 
-constexpr int kSegments = 48;
+constexpr int kSegments = 64;
 
 TriangleMesh GunBase() {
   const WeldGunLayout& G = GunLayout();
