@@ -31,16 +31,25 @@ std::string EncodeBinaryStl(const TriangleMesh& mesh, const std::string& solid_n
   out += header;
   AppendUint32(static_cast<uint32_t>(mesh.triangles.size()), &out);
   for (const Eigen::Vector3i& t : mesh.triangles) {
-    Eigen::Vector3f corners[3];
-    for (int k = 0; k < 3; ++k) corners[k] = mesh.vertices[t[k]].cast<float>();
-    // The normal of the float corners a reader will see, computed in double.
-    const Eigen::Vector3d a = corners[0].cast<double>();
-    Eigen::Vector3d n = (corners[1].cast<double>() - a).cross(corners[2].cast<double>() - a);
+    // The corners as float32, as a reader will see them. Each goes through a
+    // volatile so the normal below really uses the rounded values: GCC 12 at
+    // -O3 was observed to fold (double)(float)x back to x here, which made
+    // Release and Debug builds write different normals.
+    float corners[3][3];
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < 3; ++i) {
+        volatile float rounded = static_cast<float>(mesh.vertices[t[k]][i]);
+        corners[k][i] = rounded;
+      }
+    }
+    Eigen::Vector3d p[3];
+    for (int k = 0; k < 3; ++k) p[k] = Eigen::Vector3d(corners[k][0], corners[k][1], corners[k][2]);
+    Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
     const double norm = n.norm();
     n = norm > 0.0 ? Eigen::Vector3d(n / norm) : Eigen::Vector3d::Zero();
     for (int i = 0; i < 3; ++i) AppendFloat(static_cast<float>(n[i]), &out);
-    for (const Eigen::Vector3f& c : corners) {
-      for (int i = 0; i < 3; ++i) AppendFloat(c[i], &out);
+    for (const float* corner : corners) {
+      for (int i = 0; i < 3; ++i) AppendFloat(corner[i], &out);
     }
     out.push_back('\0');  // Attribute byte count: 0.
     out.push_back('\0');

@@ -130,6 +130,10 @@ TEST(BenchmarkAssetsTest, EveryMeshIsClosedWithManySharpEdges) {
 }
 
 TEST(RobotAssetTest, SixRevoluteMainJointsBalancerLoopAndTool0) {
+  KinematicModel bare;
+  const Status status = LoadKinematicModel(kRobotUrdf, {}, &bare);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_EQ(bare.IndependentJoints().size(), 6u);
   const KinematicModel model = LoadRobotWithGun();
   for (int k = 1; k <= 6; ++k) {
     const int j = model.JointIndex("joint_" + std::to_string(k));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -25,6 +26,20 @@ TEST(StlWriterTest, LayoutIsDeterministicAndLittleEndian) {
   const unsigned char* count = reinterpret_cast<const unsigned char*>(bytes.data()) + 80;
   EXPECT_EQ(count[0] | count[1] << 8 | count[2] << 16 | count[3] << 24,
             static_cast<int>(box.triangles.size()));
+}
+
+// The normal is the one of the float32 corners a reader sees, in every
+// build type (GCC 12 -O3 once folded the float rounding away here).
+TEST(StlWriterTest, NormalIsThatOfTheRoundedCorners) {
+  TriangleMesh sliver;
+  const double s = 0.05 * std::sin(M_PI / 64.0), c = -0.05 * std::cos(M_PI / 64.0);
+  sliver.vertices = {{-0.004, 0.0, -0.05}, {-0.004, s, c}, {0.02, s, c}};
+  sliver.triangles = {{0, 1, 2}};
+  const std::string bytes = EncodeBinaryStl(sliver, "sliver");
+  float normal[3];
+  std::memcpy(normal, bytes.data() + 84, sizeof(normal));
+  // From the float corners; the exact double geometry gives 0.0245412290.
+  EXPECT_EQ(normal[1], 0.024541055783629417f);
 }
 
 TEST(StlWriterTest, RoundTripsThroughTheMeshLoader) {
