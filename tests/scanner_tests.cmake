@@ -10,3 +10,7 @@ edgefit_add_test(scanner_test
 edgefit_add_test(scanner_model_test
   SOURCES scanner/model_scan_test.cc
   LIBS edgefit::scanner)
+# Whole scenes as `edgefit scan` builds them: bundled assets and ../shared/robots.
+edgefit_add_test(scanner_scene_test
+  SOURCES scanner/scene_scan_test.cc
+  LIBS edgefit::scanner edgefit::scene)
