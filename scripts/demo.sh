@@ -1,22 +1,34 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds edgefit (Release) and runs it on the
-# bundled data. Until the fit exists, it shows what edgefit reads: the bundled
-# scans with their estimated lattice, and the bundled and real robot models.
+# Installs what is missing, builds edgefit (Release) and runs it on the bundled
+# data. Until the fit exists (issue 6), the main job is the virtual scanner:
+# the bundled spot-welding robot with its weld gun and non-modelled accessories
+# is scanned from 3 scanners, and the scan is read back with its lattice.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 ./scripts/build.sh build/release Release -DEDGEFIT_BUILD_TESTS=OFF -- edgefit >/dev/null
 edgefit=build/release/tools/edgefit
+out=build/demo
+mkdir -p "$out"
 
-echo "== edgefit info --scan=assets/samples/two_scans.ptx"
-"$edgefit" info --scan=assets/samples/two_scans.ptx
+echo "== the bundled robot with its weld gun"
+"$edgefit" info --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0
 echo
-echo "== edgefit info --urdf=assets/models/balancer_arm.urdf"
-"$edgefit" info --urdf=assets/models/balancer_arm.urdf
-robots=../shared/robots
-if [[ -d $robots/kuka_kr150r3100_2 && -d $robots/weld_gun_x16005_botrail ]]; then
-  echo
-  echo "== edgefit info --urdf=KUKA KR 150 R3100 --attach=weld gun@tool0"
-  "$edgefit" info --urdf=$robots/kuka_kr150r3100_2/kuka_kr150r3100_2.urdf \
-    --attach=$robots/weld_gun_x16005_botrail/weld_gun_x16005_botrail.urdf@tool0
-fi
+echo "== edgefit scan: posture weld_low, accessories, 3 scanners, 1.7 mm spacing, 1 mm noise"
+"$edgefit" scan --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \
+  --posture=assets/robot/postures.json:weld_low --base=0.5,-0.2,15 --accessories --seed=7 \
+  --out="$out/robot.ptx" --truth="$out/robot_truth.json" --labels="$out/robot_labels.bin"
+echo
+echo "== ground truth ($out/robot_truth.json)"
+python3 - "$out/robot_truth.json" <<'PY' 2>/dev/null || cat "$out/robot_truth.json"
+import json, math, sys
+t = json.load(open(sys.argv[1]))
+for name, value in t["joints"].items():
+    print(f"  {name:22s} {value:+.6f}" + (f"  ({math.degrees(value):+.3f} deg)" if "gun" not in name and "piston" not in name else ""))
+c = t["counts"]
+print(f"  points: {c['valid']} valid of {c['cells']} cells; link {c['link']}, accessory {c['accessory']}, "
+      f"background {c['background']}, true-edge {c['true_edge']}")
+PY
+echo
+echo "== edgefit info --scan: the scan read back, lattice estimated from the points"
+"$edgefit" info --scan="$out/robot.ptx"
