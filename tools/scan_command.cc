@@ -35,6 +35,9 @@ DEFINE_bool(random_pose, false, "Draw the independent joints uniformly inside th
 DEFINE_string(base, "0,0,0", "Base pose on the floor: x,y in m, yaw in degrees.");
 DEFINE_bool(accessories, false, "Add non-modelled accessories: harnesses, hoses, covers, brackets.");
 DEFINE_int32(scanners, 3, "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
+DEFINE_string(scanner_at, "",
+              "Explicit scanner positions instead of --scanners: x,y,z[,yaw_deg] in m, several "
+              "separated by ':'. Without a yaw the scanner faces the asset.");
 DEFINE_double(spacing_mm, 1.7, "Point spacing at the asset's distance [mm]; sets the angular step.");
 DEFINE_double(noise_mm, 1.0, "Gaussian range noise along the laser direction, sigma [mm].");
 DEFINE_double(max_range_m, 60.0, "Maximum range [m]; farther rays are misses.");
@@ -69,6 +72,37 @@ Status ParseBase(const std::string& text, double* x, double* y, double* yaw) {
   *x = v[0];
   *y = v[1];
   *yaw = v[2] * M_PI / 180.0;
+  return Status::Ok();
+}
+
+// "x,y,z[,yaw_deg]:..." -> level scanner poses; a missing yaw faces the asset.
+Status ParseScannerPositions(const std::string& text, const Eigen::AlignedBox3d& asset_box,
+                             std::vector<Pose>* T_world_scanners) {
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find(':', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string item = text.substr(start, end - start);
+    start = end + 1;
+    const std::vector<std::string> parts = SplitList(item);
+    if (parts.size() != 3 && parts.size() != 4) {
+      return Status::Error("--scanner_at: expected x,y,z[,yaw_deg], got '" + item + "'");
+    }
+    double v[4] = {0, 0, 0, 0};
+    for (size_t i = 0; i < parts.size(); ++i) {
+      char* rest = nullptr;
+      v[i] = std::strtod(parts[i].c_str(), &rest);
+      if (*rest != '\0' || !std::isfinite(v[i])) {
+        return Status::Error("--scanner_at: '" + parts[i] + "' is not a number");
+      }
+    }
+    const Eigen::Vector3d to_asset = asset_box.center() - Eigen::Vector3d(v[0], v[1], v[2]);
+    const double yaw =
+        parts.size() == 4 ? v[3] * M_PI / 180.0 : std::atan2(to_asset.y(), to_asset.x());
+    Pose T = PoseFromXyYaw(v[0], v[1], yaw);
+    T.translation().z() = v[2];
+    T_world_scanners->push_back(T);
+  }
   return Status::Ok();
 }
 
@@ -182,10 +216,16 @@ int RunScan(const Command& command) {
   environment_options.seed = SubSeed(FLAGS_seed, 2);
   AddEnvironment(asset_box, environment_options, &scene);
 
-  ScannerPlacementOptions placement;
-  placement.count = FLAGS_scanners;
-  placement.seed = SubSeed(FLAGS_seed, 3);
-  const std::vector<Pose> T_world_scanners = PlaceScanners(asset_box, placement);
+  std::vector<Pose> T_world_scanners;
+  if (FLAGS_scanner_at.empty()) {
+    ScannerPlacementOptions placement;
+    placement.count = FLAGS_scanners;
+    placement.seed = SubSeed(FLAGS_seed, 3);
+    T_world_scanners = PlaceScanners(asset_box, placement);
+  } else {
+    EDGEFIT_RETURN_IF_ERROR_EXIT(
+        command, ParseScannerPositions(FLAGS_scanner_at, asset_box, &T_world_scanners));
+  }
 
   VirtualScanOptions scan_options;
   scan_options.spacing = FLAGS_spacing_mm * 1e-3;
@@ -211,7 +251,8 @@ int RunScan(const Command& command) {
   truth.base_yaw = yaw;
   truth.T_world_scanners = T_world_scanners;
   truth.seed = FLAGS_seed;
-  truth.settings = MakeTruthSettings(scan_options, FLAGS_scanners, FLAGS_accessories,
+  truth.settings = MakeTruthSettings(scan_options, static_cast<int>(T_world_scanners.size()),
+                                     FLAGS_accessories,
                                      FLAGS_random_pose);
   truth.counts = CountLabels(result, model);
   EDGEFIT_RETURN_IF_ERROR_EXIT(
@@ -237,14 +278,15 @@ Command ScanCommand() {
           "Usage:\n"
           "  edgefit scan --urdf=F [--attach=eef.urdf@link] (--joints=j=v,... | "
           "--posture=P.json:NAME | --random_pose --seed=N)\n"
-          "               [--base=x,y,yaw_deg] [--accessories] [--scanners=3] [--spacing_mm=1.7]\n"
-          "               [--noise_mm=1] --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]\n"
+          "               [--base=x,y,yaw_deg] [--accessories] [--scanners=3 | --scanner_at=x,y,z[,yaw]:...]\n"
+          "               [--spacing_mm=1.7]"
+          " [--noise_mm=1] --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]\n"
           "Example:\n"
           "  edgefit scan --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
-          "    --posture=assets/robot/postures.json:weld --accessories --seed=7 \\\n"
+          "    --posture=assets/robot/postures.json:weld_low --accessories --seed=7 \\\n"
           "    --out=robot.ptx --truth=robot_truth.json --labels=robot_labels.bin",
           {"urdf", "attach", "joints", "posture", "random_pose", "seed", "base", "accessories",
-           "scanners", "spacing_mm", "noise_mm", "max_range_m", "full_dome", "clutter", "out",
+           "scanners", "scanner_at", "spacing_mm", "noise_mm", "max_range_m", "full_dome", "clutter", "out",
            "truth", "labels", "threads"},
           &RunScan};
 }

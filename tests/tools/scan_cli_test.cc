@@ -1,5 +1,6 @@
 // edgefit scan through the command line: outputs, determinism, read-back
 // through edgefit info, and bad input without partial output.
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -64,6 +65,29 @@ TEST_F(ScanCliTest, SameSeedSameBytesAnyThreadCount) {
   const RunResult c = Run(SmallScanArgs(Path("c.ptx"), Path("c.json")) + " --seed=4");
   ASSERT_EQ(c.exit_code, 0) << c.err;
   EXPECT_NE(Slurp(Path("a.ptx")), Slurp(Path("c.ptx")));
+}
+
+TEST_F(ScanCliTest, ExplicitScannerPositions) {
+  const std::string out = Path("s.ptx"), truth = Path("s.json");
+  const RunResult r = Run("scan --urdf=" + kModel + " --spacing_mm=8 --out=" + out +
+                          " --truth=" + truth + " --scanner_at=3,0.5,1.5:-2.5,-1,1.3,-20");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json t = nlohmann::json::parse(Slurp(truth));
+  ASSERT_EQ(t["scanners"].size(), 2u);
+  const auto& T0 = t["scanners"][0];
+  EXPECT_DOUBLE_EQ(T0[0][3].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(T0[1][3].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(T0[2][3].get<double>(), 1.5);
+  // No yaw given: its +x looks back towards the arm near the origin.
+  EXPECT_LT(T0[0][0].get<double>(), -0.9);
+  const auto& T1 = t["scanners"][1];  // yaw -20 deg
+  EXPECT_NEAR(T1[0][0].get<double>(), std::cos(-20.0 * M_PI / 180.0), 1e-12);
+  EXPECT_NEAR(T1[1][0].get<double>(), std::sin(-20.0 * M_PI / 180.0), 1e-12);
+  EXPECT_EQ(t["settings"]["scanners"].get<int>(), 2);
+  ExpectBadInput("scan --urdf=" + kModel + " --out=" + Path("u.ptx") + " --truth=" +
+                     Path("u.json") + " --scanner_at=1,2",
+                 "--scanner_at");
+  EXPECT_FALSE(fs::exists(Path("u.ptx")));
 }
 
 TEST_F(ScanCliTest, BadInputLeavesNoOutput) {
