@@ -15,6 +15,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
+#include "edgefit/core/split_mix64.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
@@ -51,12 +52,7 @@ namespace edgefit::tools {
 namespace {
 
 // Independent random streams from one --seed.
-uint64_t SubSeed(uint64_t seed, uint64_t stream) {
-  uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (stream + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
+uint64_t SubSeed(uint64_t seed, uint64_t stream) { return SplitMix64::StreamSeed(seed, stream); }
 
 Status ParseBase(const std::string& text, double* x, double* y, double* yaw) {
   const std::vector<std::string> parts = SplitList(text);

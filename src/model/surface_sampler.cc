@@ -5,31 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgefit/core/split_mix64.h"
+
 namespace edgefit {
 namespace {
-
-// SplitMix64 (Steele, Lea, Flood 2014): tiny, fast, passes BigCrush, and
-// fully specified, so results are the same on every platform.
-class SplitMix64 {
- public:
-  explicit SplitMix64(uint64_t seed) : state_(seed) {}
-  uint64_t Next() {
-    uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1) from the top 53 bits.
-  double Uniform() { return static_cast<double>(Next() >> 11) * 0x1.0p-53; }
-
- private:
-  uint64_t state_;
-};
-
-uint64_t MixSeed(uint64_t seed, uint64_t index) {
-  SplitMix64 mix(seed ^ (index * 0xD1B54A32D192ED03ULL));
-  return mix.Next();
-}
 
 }  // namespace
 
@@ -93,7 +72,7 @@ std::vector<SurfaceSamples> SampleModelSurfaces(const KinematicModel& model,
 #pragma omp parallel for schedule(dynamic)
   for (int l = 0; l < num_links; ++l) {
     out[l] = SampleMeshSurface(model.links()[l].mesh, options.spacing,
-                               MixSeed(options.seed, static_cast<uint64_t>(l)));
+                               SplitMix64::StreamSeed(options.seed, static_cast<uint64_t>(l)));
   }
   return out;
 }

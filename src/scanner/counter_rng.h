@@ -12,15 +12,10 @@
 #include <cmath>
 #include <cstdint>
 
+#include "edgefit/core/split_mix64.h"
+
 namespace edgefit {
 namespace scanner_internal {
-
-// The SplitMix64 finaliser: a bijective 64-bit mix.
-inline uint64_t Mix64(uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 // Hash of (seed, stream, counter): distinct inputs give independent-looking outputs.
 inline uint64_t CounterHash(uint64_t seed, uint64_t stream, uint64_t counter) {
@@ -38,24 +33,6 @@ inline double StandardNormal(uint64_t bits_a, uint64_t bits_b) {
   constexpr double kTwoPi = 6.283185307179586476925286766559;
   return std::sqrt(-2.0 * std::log(UnitOpen(bits_a))) * std::cos(kTwoPi * UnitOpen(bits_b));
 }
-
-// A sequential SplitMix64 generator, for the few draws of joint values and
-// scanner placements (not per cell).
-class SplitMix64 {
- public:
-  explicit SplitMix64(uint64_t seed) : state_(seed) {}
-  uint64_t Next() {
-    state_ += 0x9e3779b97f4a7c15ULL;
-    return Mix64(state_);
-  }
-  // Uniform in [lo, hi).
-  double Uniform(double lo, double hi) {
-    return lo + (hi - lo) * (static_cast<double>(Next() >> 11) * (1.0 / 9007199254740992.0));
-  }
-
- private:
-  uint64_t state_;
-};
 
 }  // namespace scanner_internal
 }  // namespace edgefit

@@ -9,7 +9,7 @@ namespace edgefit {
 std::vector<double> RandomJointValues(const KinematicModel& model, uint64_t seed) {
   constexpr int kMaxDraws = 64;
   constexpr double kPi = 3.14159265358979323846;
-  scanner_internal::SplitMix64 rng(seed);
+  SplitMix64 rng(seed);
   const std::vector<int> independent = model.IndependentJoints();
   std::vector<double> q;
   for (int draw = 0; draw < kMaxDraws; ++draw) {
@@ -30,7 +30,7 @@ std::vector<double> RandomJointValues(const KinematicModel& model, uint64_t seed
 bool RandomJointValuesAboveFloor(const KinematicModel& model, const Pose& T_world_base,
                                  double floor_z, uint64_t seed, std::vector<double>* q,
                                  double tolerance, int max_draws) {
-  scanner_internal::SplitMix64 seeds(seed);
+  SplitMix64 seeds(seed);
   for (int draw = 0; draw < max_draws; ++draw) {
     *q = RandomJointValues(model, draw == 0 ? seed : seeds.Next());
     const Eigen::AlignedBox3d box = model.BoundingBox(*q, T_world_base);

@@ -55,7 +55,7 @@ std::vector<Pose> PlaceScanners(const Eigen::AlignedBox3d& asset_box_world,
   std::string error;
   CHECK(options.IsValid(&error)) << error;
   CHECK(!asset_box_world.isEmpty()) << "PlaceScanners needs a non-empty asset box";
-  scanner_internal::SplitMix64 rng(options.seed);
+  SplitMix64 rng(options.seed);
 
   // Random azimuth gaps, renormalised to close the circle.
   const int n = options.count;

@@ -14,7 +14,6 @@ namespace {
 
 using scene_internal::ClampSite;
 using scene_internal::PartContext;
-using scene_internal::SceneRandom;
 using scene_internal::SurfaceClearance;
 
 // Surface samples per link: enough for 1-2 cm spacing on a 1-3 m^2 robot
@@ -95,7 +94,7 @@ void AddAccessories(const KinematicModel& model, const std::vector<double>& q,
   *report = AccessoryReport();
 
   SurfaceClearance clearance(model, T_world_link, options.sample_spacing, kMaxSamplesPerLink,
-                             SceneRandom::Stream(options.seed, kSamples).Next());
+                             SplitMix64::Stream(options.seed, kSamples).Next());
   PartContext context;
   context.model = &model;
   context.T_world_link = &T_world_link;
@@ -107,7 +106,7 @@ void AddAccessories(const KinematicModel& model, const std::vector<double>& q,
 
   // Covers first: tubes are then routed over them.
   {
-    SceneRandom rng = SceneRandom::Stream(options.seed, kCovers);
+    SplitMix64 rng = SplitMix64::Stream(options.seed, kCovers);
     std::vector<int> by_area(context.chain.begin() + (context.chain[0] == model.root_link() ? 1 : 0),
                              context.chain.end());
     std::stable_sort(by_area.begin(), by_area.end(), [&](int a, int b) {
@@ -129,7 +128,7 @@ void AddAccessories(const KinematicModel& model, const std::vector<double>& q,
 
   std::vector<ClampSite> clamps;
   if (n >= 2) {
-    SceneRandom rng = SceneRandom::Stream(options.seed, kHarnesses);
+    SplitMix64 rng = SplitMix64::Stream(options.seed, kHarnesses);
     for (int h = 0; h < options.harness_count; ++h) {
       // The first spans base to forearm (the wrist is left to the hoses);
       // the others a seeded range of at least two links.
@@ -149,7 +148,7 @@ void AddAccessories(const KinematicModel& model, const std::vector<double>& q,
       clamps.insert(clamps.end(), sites.begin(), sites.end());
       Add("harness", std::move(mesh), radius, std::move(links), scene, report);
     }
-    rng = SceneRandom::Stream(options.seed, kHoses);
+    rng = SplitMix64::Stream(options.seed, kHoses);
     for (int h = 0; h < options.hose_count; ++h) {
       TriangleMesh mesh;
       double radius = 0.0;
@@ -159,7 +158,7 @@ void AddAccessories(const KinematicModel& model, const std::vector<double>& q,
     }
   }
 
-  SceneRandom rng = SceneRandom::Stream(options.seed, kBrackets);
+  SplitMix64 rng = SplitMix64::Stream(options.seed, kBrackets);
   if (options.harness_clamps) {
     for (const ClampSite& site : clamps) {
       TriangleMesh mesh;

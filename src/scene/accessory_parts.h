@@ -10,7 +10,7 @@
 #include "edgefit/model/kinematic_model.h"
 #include "edgefit/model/triangle_mesh.h"
 #include "edgefit/scene/accessories.h"
-#include "scene_random.h"
+#include "edgefit/core/split_mix64.h"
 #include "surface_clearance.h"
 
 namespace edgefit {
@@ -34,24 +34,24 @@ struct ClampSite {
 
 // A harness over chain[first..last] (last > first). Fills *mesh, *radius,
 // the links its control points lie on (*links) and clamp sites.
-bool BuildHarness(const PartContext& context, int first, int last, SceneRandom* rng,
+bool BuildHarness(const PartContext& context, int first, int last, SplitMix64* rng,
                   TriangleMesh* mesh, double* radius, std::vector<int>* links,
                   std::vector<ClampSite>* clamps);
 
 // A hose from the forearm to the last chain link with a loop.
-bool BuildHose(const PartContext& context, SceneRandom* rng, TriangleMesh* mesh, double* radius,
+bool BuildHose(const PartContext& context, SplitMix64* rng, TriangleMesh* mesh, double* radius,
                std::vector<int>* links);
 
 // A cover shell over one side of `link`.
-bool BuildCover(const PartContext& context, int link, SceneRandom* rng, TriangleMesh* mesh);
+bool BuildCover(const PartContext& context, int link, SplitMix64* rng, TriangleMesh* mesh);
 
 // An L-bracket standing on the surface point nearest to `site.p_world`,
 // its upright leg beside the tube.
-bool BuildClampBracket(const PartContext& context, const ClampSite& site, SceneRandom* rng,
+bool BuildClampBracket(const PartContext& context, const ClampSite& site, SplitMix64* rng,
                        TriangleMesh* mesh);
 
 // An L-bracket at a seeded surface sample of `link`.
-bool BuildFreeBracket(const PartContext& context, int link, SceneRandom* rng, TriangleMesh* mesh);
+bool BuildFreeBracket(const PartContext& context, int link, SplitMix64* rng, TriangleMesh* mesh);
 
 // Closed L-shaped prism in the frame T_world_bracket: the plate spans
 // y in [0, plate], z in [0, thickness]; the upright leg y in [0, thickness],

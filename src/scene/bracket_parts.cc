@@ -46,7 +46,7 @@ double MaxLeg(const PartContext& context, int link) {
 
 }  // namespace
 
-bool BuildClampBracket(const PartContext& context, const ClampSite& site, SceneRandom* rng,
+bool BuildClampBracket(const PartContext& context, const ClampSite& site, SplitMix64* rng,
                        TriangleMesh* mesh) {
   const AccessoryOptions& options = *context.options;
   const SurfaceCloud& cloud = context.clearance->LinkCloud(site.link);
@@ -79,7 +79,7 @@ bool BuildClampBracket(const PartContext& context, const ClampSite& site, SceneR
   return true;
 }
 
-bool BuildFreeBracket(const PartContext& context, int link, SceneRandom* rng, TriangleMesh* mesh) {
+bool BuildFreeBracket(const PartContext& context, int link, SplitMix64* rng, TriangleMesh* mesh) {
   const AccessoryOptions& options = *context.options;
   const SurfaceCloud& cloud = context.clearance->LinkCloud(link);
   if (cloud.p_world.empty()) return false;

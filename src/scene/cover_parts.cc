@@ -36,7 +36,7 @@ void SideFrame(int side, Eigen::Vector3d* d, Eigen::Vector3d* e1, Eigen::Vector3
 
 }  // namespace
 
-bool BuildCover(const PartContext& context, int link, SceneRandom* rng, TriangleMesh* mesh) {
+bool BuildCover(const PartContext& context, int link, SplitMix64* rng, TriangleMesh* mesh) {
   const AccessoryOptions& options = *context.options;
   const SurfaceCloud& cloud = context.clearance->LinkCloud(link);
   if (cloud.p_world.size() < 50) return false;

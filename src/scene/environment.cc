@@ -8,12 +8,11 @@
 
 #include "edgefit/core/pose.h"
 #include "edgefit/model/primitive_meshes.h"
-#include "scene_random.h"
+#include "edgefit/core/split_mix64.h"
 
 namespace edgefit {
 namespace {
 
-using scene_internal::SceneRandom;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -24,7 +23,7 @@ void AddBox(const Eigen::Vector3d& size, const Eigen::Vector3d& center, Triangle
 }
 
 // A square or round pillar, 3.5-6 m tall, 0.3-0.6 m wide.
-TriangleMesh MakePillar(SceneRandom* rng) {
+TriangleMesh MakePillar(SplitMix64* rng) {
   TriangleMesh mesh;
   const double height = rng->Uniform(3.5, 6.0);
   const double width = rng->Uniform(0.3, 0.6);
@@ -38,7 +37,7 @@ TriangleMesh MakePillar(SceneRandom* rng) {
 }
 
 // A EUR-style pallet (1.2 x 0.8 m: three runners, a deck) with 1-3 boxes.
-TriangleMesh MakePallet(SceneRandom* rng) {
+TriangleMesh MakePallet(SplitMix64* rng) {
   TriangleMesh mesh;
   const double length = 1.2, width = 0.8, runner_h = 0.1, deck_h = 0.044;
   for (int i = 0; i < 3; ++i) {
@@ -60,7 +59,7 @@ TriangleMesh MakePallet(SceneRandom* rng) {
 
 // A safety-fence panel along x: two posts, top/bottom rails, and vertical
 // wire bars every 5 cm (a mesh seen edge-on by a scanner).
-TriangleMesh MakeFence(SceneRandom* rng) {
+TriangleMesh MakeFence(SplitMix64* rng) {
   TriangleMesh mesh;
   const double width = rng->Uniform(1.5, 2.5), height = rng->Uniform(1.8, 2.2);
   const double post = 0.05, rail = 0.03, bar = 0.006, bar_pitch = 0.05;
@@ -121,7 +120,7 @@ void AddEnvironment(const Eigen::AlignedBox3d& asset_box_world, const Environmen
   ring.max() += reach;
 
   // Clutter first, so the floor can be grown to carry it.
-  SceneRandom rng = SceneRandom::Stream(options.seed, 0x656e76);  // "env"
+  SplitMix64 rng = SplitMix64::Stream(options.seed, 0x656e76);  // "env"
   static const char* const kKinds[] = {"pillar", "pallet", "fence"};
   const int kind_offset = rng.Int(0, 2);
   std::vector<Eigen::AlignedBox3d> placed;

@@ -121,7 +121,7 @@ std::vector<Eigen::Vector3d> FitCenterline(const PartContext& context,
 
 }  // namespace
 
-bool BuildHarness(const PartContext& context, int first, int last, SceneRandom* rng,
+bool BuildHarness(const PartContext& context, int first, int last, SplitMix64* rng,
                   TriangleMesh* mesh, double* radius, std::vector<int>* links,
                   std::vector<ClampSite>* clamps) {
   CHECK_LT(first, last);
@@ -197,7 +197,7 @@ bool BuildHarness(const PartContext& context, int first, int last, SceneRandom* 
   return true;
 }
 
-bool BuildHose(const PartContext& context, SceneRandom* rng, TriangleMesh* mesh, double* radius,
+bool BuildHose(const PartContext& context, SplitMix64* rng, TriangleMesh* mesh, double* radius,
                std::vector<int>* links) {
   const int n = static_cast<int>(context.chain.size());
   if (n < 2) return false;
