@@ -46,9 +46,11 @@ inline bool NormalFromMoments(const WeightedMoments& m, const Eigen::Vector3f& p
   cov(1, 0) = cov(0, 1);
   cov(2, 0) = cov(0, 2);
   cov(2, 1) = cov(1, 2);
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver;
-  solver.computeDirect(cov, Eigen::ComputeEigenvectors);
-  Eigen::Vector3f normal = solver.eigenvectors().col(0);  // eigenvalues ascending
+  // Closed form (Eigen's computeDirect) in double: float loses the smallest
+  // eigenvector of nearly flat patches; double costs little here.
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(cov.cast<double>(), Eigen::ComputeEigenvectors);
+  Eigen::Vector3f normal = solver.eigenvectors().col(0).cast<float>();  // eigenvalues ascending
   const float norm = normal.norm();
   if (!(norm > 0.0f)) return false;
   normal /= norm;
