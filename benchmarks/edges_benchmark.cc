@@ -1,0 +1,241 @@
+// Edge detection speed (paper Sec. 4, 7.2: ~5 M points per dataset) on a
+// ~5 M point virtual scan of the bundled robot (assets/robot/robot.urdf,
+// posture "home") on a floor from 3 scanners at ~1.7 mm spacing, 1 mm noise:
+// per-stage kernels (4.1 normals, 4.2 scores, 4.3 region growing), the whole
+// DetectEdges, and as reference a nanoflann kd-tree normal estimation at the
+// same physical radius (tree build + radius search + PCA), 1 and 2 threads.
+//   build-edges/benchmarks/edges_benchmark --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+#include <glog/logging.h>
+#include <omp.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <nanoflann.hpp>
+
+#include "edgefit/edges/edge_detector.h"
+#include "edgefit/edges/edge_score.h"
+#include "edgefit/edges/grid_normals.h"
+#include "edgefit/edges/region_growing.h"
+#include "edgefit/model/joint_values.h"
+#include "edgefit/model/urdf_loader.h"
+#include "edgefit/scanner/scanner_placement.h"
+#include "edgefit/scanner/virtual_scanner.h"
+
+namespace edgefit {
+namespace {
+
+#ifndef EDGEFIT_SOURCE_DIR
+#define EDGEFIT_SOURCE_DIR "."
+#endif
+
+struct Fixture {
+  ScanSet scans;
+  std::vector<GridCloud> clouds;
+  std::vector<GridNormals> normals;
+  std::vector<std::vector<float>> scores;
+  EdgeCandidates candidates;
+  EdgeDetectionOptions options;
+  double spacing = 0.0017;
+};
+
+Fixture& GetFixture() {
+  static Fixture* fixture = [] {
+    auto* f = new Fixture;
+    const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
+    KinematicModel model;
+    CHECK(LoadKinematicModel(dir + "robot.urdf", {}, &model).ok());
+    std::vector<double> q = model.ZeroJoints();
+    CHECK(LoadNamedPosture(dir + "postures.json", "home", model, &q).ok());
+    CHECK(model.ResolveDependentJoints(&q).ok());
+    Scene scene;
+    SceneMesh floor;
+    floor.mesh_world.vertices = {{-30, -30, 0}, {30, -30, 0}, {30, 30, 0}, {-30, 30, 0}};
+    floor.mesh_world.triangles = {{0, 1, 2}, {0, 2, 3}};
+    floor.kind = "floor";
+    scene.meshes.push_back(floor);
+    const std::vector<Pose> T_world_link = model.ForwardKinematics(q);
+    for (size_t k = 0; k < model.links().size(); ++k) {
+      if (model.links()[k].mesh.empty()) continue;
+      SceneMesh m;
+      m.mesh_world.Append(model.links()[k].mesh, T_world_link[k]);
+      m.label = LinkLabel(static_cast<int>(k));
+      m.link = static_cast<int>(k);
+      m.kind = "link";
+      scene.meshes.push_back(std::move(m));
+    }
+    ScannerPlacementOptions placement;
+    placement.count = 3;
+    const std::vector<Pose> poses = PlaceScanners(model.BoundingBox(q), placement);
+    VirtualScanOptions options;
+    std::unique_ptr<VirtualScanner> scanner;
+    CHECK(VirtualScanner::Create(scene, options, &scanner).ok());
+    VirtualScan scan;
+    for (int i = 0; i < 6; ++i) {  // spacing for ~5 M valid points
+      CHECK(scanner->Scan(poses, options, &scan).ok());
+      const double scale = std::sqrt(static_cast<double>(scan.scans.TotalValid()) / 5.0e6);
+      if (std::abs(scale - 1.0) < 0.02) break;
+      options.spacing *= scale;
+    }
+    f->spacing = options.spacing;
+    f->scans = std::move(scan.scans);
+    f->options.tau_dot = 0.8;
+    GridNormalOptions normal_options;
+    EdgeScoreOptions score_options;
+    score_options.max_half_window = 16;
+    for (const OrganizedScan& s : f->scans.scans) {
+      f->clouds.push_back(GridCloud::FromScan(s));
+      f->normals.emplace_back();
+      EstimateGridNormals(f->clouds.back(), normal_options, &f->normals.back());
+      f->scores.emplace_back();
+      ComputeEdgeScores(f->clouds.back(), f->normals.back(), score_options, &f->scores.back());
+      const Eigen::Matrix3f R = s.T_world_scanner().linear().cast<float>();
+      const Eigen::Vector3f t = s.T_world_scanner().translation().cast<float>();
+      const GridNormals& n = f->normals.back();
+      for (size_t i = 0; i < s.size(); ++i) {
+        if (f->scores.back()[i] < f->options.tau_dot) {
+          f->candidates.Add(R * s.point_scanner(i) + t,
+                            R * Eigen::Vector3f(n.x[i], n.y[i], n.z[i]), f->scores.back()[i]);
+        }
+      }
+    }
+    return f;
+  }();
+  return *fixture;
+}
+
+class ThreadScope {
+ public:
+  explicit ThreadScope(int threads) : saved_(omp_get_max_threads()) { omp_set_num_threads(threads); }
+  ~ThreadScope() { omp_set_num_threads(saved_); }
+
+ private:
+  int saved_;
+};
+
+void SetPointCounters(benchmark::State& state, const Fixture& f) {
+  state.counters["points"] = static_cast<double>(f.scans.TotalValid());
+  state.counters["cells"] = static_cast<double>(f.scans.TotalCells());
+  state.counters["spacing_mm"] = f.spacing * 1e3;
+}
+
+void BM_GridNormals(benchmark::State& state) {
+  Fixture& f = GetFixture();
+  ThreadScope threads(static_cast<int>(state.range(0)));
+  GridNormals normals;
+  for (auto _ : state) {
+    for (const GridCloud& cloud : f.clouds) EstimateGridNormals(cloud, GridNormalOptions(), &normals);
+  }
+  SetPointCounters(state, f);
+}
+BENCHMARK(BM_GridNormals)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_EdgeScores(benchmark::State& state) {
+  Fixture& f = GetFixture();
+  ThreadScope threads(static_cast<int>(state.range(0)));
+  std::vector<float> scores;
+  for (auto _ : state) {
+    for (size_t s = 0; s < f.clouds.size(); ++s) {
+      ComputeEdgeScores(f.clouds[s], f.normals[s], EdgeScoreOptions(), &scores);
+    }
+  }
+  SetPointCounters(state, f);
+}
+BENCHMARK(BM_EdgeScores)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_RegionGrowing(benchmark::State& state) {
+  Fixture& f = GetFixture();
+  ThreadScope threads(static_cast<int>(state.range(0)));
+  RegionGrowingOptions options;
+  RegionGrowingResult result;
+  for (auto _ : state) GrowEdgeRegions(f.candidates, options, &result);
+  state.counters["candidates"] = static_cast<double>(f.candidates.size());
+  state.counters["regions"] = static_cast<double>(result.regions);
+}
+BENCHMARK(BM_RegionGrowing)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_DetectEdges(benchmark::State& state) {
+  Fixture& f = GetFixture();
+  ThreadScope threads(static_cast<int>(state.range(0)));
+  EdgeDetectionResult result;
+  for (auto _ : state) CHECK(DetectEdges(f.scans, f.options, &result).ok());
+  SetPointCounters(state, f);
+  state.counters["normals_s"] = result.timings.normals;
+  state.counters["scores_s"] = result.timings.scores;
+  state.counters["regions_s"] = result.timings.region_growing;
+  state.counters["candidates"] = static_cast<double>(result.candidates);
+  state.counters["edge_points"] = static_cast<double>(result.edge_points);
+  // Memory: the result (normal 12 + score 4 + w_edge 4 bytes per cell), the
+  // per-scan working arrays of the largest scan (GridCloud 16 + initial and
+  // final normals 24 bytes per cell) and the candidates (p, n, score, cell:
+  // 36 bytes) with their kd-tree index and ~neighbour lists (measured
+  // separately as 4 bytes per neighbour, <= 64 neighbours assumed).
+  size_t largest = 0;
+  for (const OrganizedScan& s : f.scans.scans) largest = std::max(largest, s.size());
+  const double bytes = 20.0 * static_cast<double>(f.scans.TotalCells()) + 40.0 * largest +
+                       static_cast<double>(result.candidates) * (36.0 + 8.0 + 4.0 * 64.0);
+  state.counters["bytes_per_point"] = bytes / static_cast<double>(f.scans.TotalValid());
+}
+BENCHMARK(BM_DetectEdges)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Reference: the same radius with a 3D kd-tree instead of the lattice window
+// (nanoflann tree per scan, radius search, one unweighted PCA per point).
+struct ScanAdaptor {
+  const std::vector<Eigen::Vector3f>* points;
+  size_t kdtree_get_point_count() const { return points->size(); }
+  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const { return false; }
+};
+using ScanTree = nanoflann::KDTreeSingleIndexAdaptor<
+    nanoflann::L2_Simple_Adaptor<float, ScanAdaptor>, ScanAdaptor, 3, uint32_t>;
+
+void BM_KdTreeNormalsReference(benchmark::State& state) {
+  Fixture& f = GetFixture();
+  ThreadScope threads(static_cast<int>(state.range(0)));
+  const float radius = static_cast<float>(f.options.normal_radius);
+  std::vector<std::vector<Eigen::Vector3f>> points(f.scans.scans.size());
+  for (size_t s = 0; s < points.size(); ++s) {
+    for (size_t i = 0; i < f.scans.scans[s].size(); ++i) {
+      if (f.scans.scans[s].IsValid(i)) points[s].push_back(f.scans.scans[s].point_scanner(i));
+    }
+  }
+  std::vector<Eigen::Vector3f> normals;
+  for (auto _ : state) {
+    for (const auto& cloud : points) {
+      ScanAdaptor adaptor{&cloud};
+      ScanTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+      tree.buildIndex();
+      normals.assign(cloud.size(), Eigen::Vector3f::Zero());
+#pragma omp parallel
+      {
+        std::vector<std::pair<uint32_t, float>> matches;
+        const nanoflann::SearchParams params(32, 0.0f, false);
+#pragma omp for schedule(dynamic, 1024)
+        for (int64_t i = 0; i < static_cast<int64_t>(cloud.size()); ++i) {
+          matches.clear();
+          tree.radiusSearch(cloud[i].data(), radius * radius, matches, params);
+          if (matches.size() < 3) continue;
+          Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+          for (const auto& m : matches) mean += cloud[m.first] - cloud[i];
+          mean /= static_cast<float>(matches.size());
+          Eigen::Matrix3f cov = Eigen::Matrix3f::Zero();
+          for (const auto& m : matches) {
+            const Eigen::Vector3f d = cloud[m.first] - cloud[i] - mean;
+            cov.noalias() += d * d.transpose();
+          }
+          Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+          solver.computeDirect(cov.cast<double>(), Eigen::ComputeEigenvectors);
+          normals[static_cast<size_t>(i)] = solver.eigenvectors().col(0).cast<float>();
+        }
+      }
+    }
+  }
+  SetPointCounters(state, f);
+}
+BENCHMARK(BM_KdTreeNormalsReference)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace edgefit
+
+BENCHMARK_MAIN();
