@@ -7,3 +7,7 @@ edgefit_add_test(edges_test
     edges/region_growing_test.cc
     edges/edge_detector_test.cc
   LIBS edgefit::edges edgefit::scanner OpenMP::OpenMP_CXX)
+# Quality regression guard on the bundled robot with accessories.
+edgefit_add_test(edges_quality_test
+  SOURCES edges/edge_quality_test.cc
+  LIBS edgefit::edges edgefit::scanner edgefit::scene)

@@ -9,6 +9,7 @@ namespace edgefit::tools {
 
 Command InfoCommand();
 Command ScanCommand();
+Command EdgesCommand();
 
 }  // namespace edgefit::tools
 

@@ -8,3 +8,7 @@ DEFINE_string(attach, "",
 DEFINE_bool(json, false, "Print one JSON object on stdout instead of text.");
 DEFINE_int32(threads, 0, "Worker threads (0 = all cores). Results do not depend on it.");
 DEFINE_uint64(seed, 1, "Seed of every random choice; same seed and flags, same output.");
+DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (others 1).");
+DEFINE_string(labels, "",
+              "Per-cell labels sidecar of a virtual scan (format: include/edgefit/scanner/"
+              "label_file.h): written by scan; read by edges to score against the true edges.");

@@ -11,5 +11,7 @@ DECLARE_string(attach);
 DECLARE_bool(json);
 DECLARE_int32(threads);
 DECLARE_uint64(seed);
+DECLARE_double(w_high);
+DECLARE_string(labels);
 
 #endif  // EDGEFIT_TOOLS_COMMON_FLAGS_H_

@@ -14,6 +14,7 @@ const std::vector<Command>& AllCommands() {
   static const std::vector<Command> kCommands = {
       InfoCommand(),
       ScanCommand(),
+      EdgesCommand(),
   };
   return kCommands;
 }

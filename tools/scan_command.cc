@@ -46,7 +46,6 @@ DEFINE_bool(full_dome, false, "Scan 360 degrees in azimuth instead of a window a
 DEFINE_int32(clutter, 4, "Clutter objects (pillars, boxes, a fence panel) away from the asset.");
 DEFINE_string(out, "", "Output scan: .ptx (all scans in one file) or .pcd (one file per scan: F_0.pcd, ...).");
 DEFINE_string(truth, "", "Output ground truth JSON: joints, T_world_base, scanners, settings.");
-DEFINE_string(labels, "", "Optional per-cell labels sidecar (format in include/edgefit/scanner/truth.h).");
 
 namespace edgefit::tools {
 namespace {

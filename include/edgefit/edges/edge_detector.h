@@ -27,7 +27,11 @@ struct EdgeDetectionOptions {
   // 4.2 Edge score over the annulus r_min < d < r_max (Eq. 3).
   double r_min = 0.005;              // [m] (paper: 5 mm)
   double r_max = 0.010;              // [m] (paper: 10 mm)
-  double tau_dot = 0.95;             // S_i < tau_dot -> candidate (chosen by measurement)
+  // S_i < tau_dot -> candidate. 0.8 chosen by measurement (BENCHMARK.md, "Edge
+  // detection"): the lowest share of accessory points with w_high at which the
+  // robot's true edges are still found; higher values find more edges but give
+  // harness tubes w_high more often than the links.
+  double tau_dot = 0.8;
   // 4.3 Region growing.
   double region_radius = 0.004;      // [m] neighbour radius when growing
   double tau_region = 0.95;          // Eq. (5)
