@@ -2,7 +2,8 @@
 # Installs what is missing, builds edgefit (Release) and runs it on the bundled
 # data. Until the fit exists (issue 6), the main job is the virtual scanner:
 # the bundled spot-welding robot with its weld gun and non-modelled accessories
-# is scanned from 3 scanners, and the scan is read back with its lattice.
+# is scanned from 3 scanners, the scan is read back with its lattice, and its
+# edges are detected and scored against the scanner's ground truth.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -32,3 +33,9 @@ PY
 echo
 echo "== edgefit info --scan: the scan read back, lattice estimated from the points"
 "$edgefit" info --scan="$out/robot.ptx"
+echo
+echo "== edgefit edges: paper Sec. 4 on the scan lattice, scored against the true edges"
+"$edgefit" edges --scan="$out/robot.ptx" --labels="$out/robot_labels.bin" \
+  --out_weights="$out/robot_weights.bin" --out_json="$out/robot_edges.json" \
+  --out_ply="$out/robot_edges.ply"
+echo "(open $out/robot_edges.ply in CloudCompare or MeshLab: red = w_high)"
