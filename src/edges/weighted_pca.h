@@ -15,9 +15,11 @@ namespace internal {
 // exp(x) for x in [-2, 0] (Eq. 1 with h = d_max / 2 gives exponents
 // -2 d^2 / d_max^2 in [-2, 0]) as (Taylor_5(x / 4))^4: relative error < 1e-4,
 // branch free, so the window loops vectorise (std::exp does not).
-inline float GaussianWeightExp(float x) {
-  const float y = 0.25f * x;
-  float e = 1.0f + y * (1.0f + y * (0.5f + y * (1.0f / 6 + y * (1.0f / 24 + y * (1.0f / 120)))));
+// Also for vectors of floats (row_block.h).
+template <typename T>
+inline T GaussianWeightExp(T x) {
+  const T y = 0.25f * x;
+  T e = 1.0f + y * (1.0f + y * (0.5f + y * (1.0f / 6 + y * (1.0f / 24 + y * (1.0f / 120)))));
   e *= e;
   return e * e;
 }
