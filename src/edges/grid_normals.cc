@@ -3,7 +3,9 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <vector>
 
 #include "row_block.h"
 #include "weighted_pca.h"
@@ -34,9 +36,12 @@ using internal::VecI;
 // otherwise stage 2 over those whose initial normals satisfy Eq. (2). Both
 // stages weight by Eq. (1) with h from the whole (unfiltered) neighbourhood.
 // A lane gets false in ok[] with fewer than kMinNeighbours neighbours.
+// `scales` (optional) holds per cell the Eq. (1) exponent scale -2 / d_max^2
+// (NaN: too few neighbours): stage 1 writes it, stage 2 reads it instead of
+// recomputing pass A (the unfiltered neighbourhood is the same).
 void BlockNormals(const GridCloud& cloud, const GridNormalOptions& options,
                   const internal::RowBlock& block, const GridNormals* initial,
-                  Eigen::Vector3f n[kLanes], bool ok[kLanes]) {
+                  std::vector<float>* scales, Eigen::Vector3f n[kLanes], bool ok[kLanes]) {
   const float radius = static_cast<float>(options.radius);
   const float radius2 = radius * radius;
   const int rows = cloud.rows;
@@ -49,9 +54,10 @@ void BlockNormals(const GridCloud& cloud, const GridNormalOptions& options,
   const VecF zi = internal::LoadRows(pz + self, rows, block.row0);
 
   // Pass A: neighbour count and the largest neighbour distance (h = d_max / 2).
+  const bool cached = scales != nullptr && initial != nullptr;
   VecF d2_max{};
   VecI count{};
-  internal::ForEachBlockOffset(cloud, block, [&](size_t base, int r, VecI mask) {
+  if (!cached) internal::ForEachBlockOffset(cloud, block, [&](size_t base, int r, VecI mask) {
     const VecF dx = internal::LoadRows(px + base, rows, r) - xi;
     const VecF dy = internal::LoadRows(py + base, rows, r) - yi;
     const VecF dz = internal::LoadRows(pz + base, rows, r) - zi;
@@ -63,7 +69,15 @@ void BlockNormals(const GridCloud& cloud, const GridNormalOptions& options,
 
   // Pass B: Eq. (1) weights w = exp(-2 d^2 / d_max^2), weighted moments of
   // the offsets, Eq. (2) filter in stage 2.
-  const VecF exponent_scale = d2_max > 0.0f ? -2.0f / d2_max : VecF{};
+  const VecF nan = VecF{} + std::numeric_limits<float>::quiet_NaN();
+  const VecF exponent_scale =
+      cached ? internal::LoadRows(scales->data() + self, rows, block.row0)
+             : ((count >= kMinNeighbours) & (d2_max > 0.0f) ? -2.0f / d2_max : nan);
+  if (scales != nullptr && !cached) {
+    for (int j = 0; j < kLanes && block.row0 + j < rows; ++j) {
+      (*scales)[self + static_cast<size_t>(block.row0 + j)] = exponent_scale[j];
+    }
+  }
   const VecF tau_align = VecF{} + static_cast<float>(options.tau_align);
   const float* nx = initial != nullptr ? initial->x.data() : nullptr;
   const float* ny = initial != nullptr ? initial->y.data() : nullptr;
@@ -101,8 +115,7 @@ void BlockNormals(const GridCloud& cloud, const GridNormalOptions& options,
   });
   for (int j = 0; j < kLanes; ++j) {
     ok[j] = false;
-    if (block.half_rows[j] < 0 || count[j] < kMinNeighbours || !(d2_max[j] > 0.0f) ||
-        kept[j] < kMinNeighbours) {
+    if (block.half_rows[j] < 0 || std::isnan(exponent_scale[j]) || kept[j] < kMinNeighbours) {
       continue;
     }
     internal::WeightedMoments m;
@@ -115,7 +128,7 @@ void BlockNormals(const GridCloud& cloud, const GridNormalOptions& options,
 }
 
 void RunStage(const GridCloud& cloud, const GridNormalOptions& options, const GridNormals* initial,
-              GridNormals* out) {
+              std::vector<float>* scales, GridNormals* out) {
   out->Resize(cloud.size());
   const int rows = cloud.rows;
   const float radius = static_cast<float>(options.radius);
@@ -136,7 +149,7 @@ void RunStage(const GridCloud& cloud, const GridNormalOptions& options, const Gr
       if (block.Empty()) continue;  // out->Resize filled NaN
       Eigen::Vector3f n[kLanes];
       bool ok[kLanes];
-      BlockNormals(cloud, options, block, initial, n, ok);
+      BlockNormals(cloud, options, block, initial, scales, n, ok);
       for (int j = 0; j < kLanes && row0 + j < rows; ++j) {
         const size_t i = col_base + static_cast<size_t>(row0 + j);
         if (block.half_rows[j] < 0) {
@@ -167,21 +180,23 @@ void GridNormals::Resize(size_t n) {
 void EstimateInitialNormals(const GridCloud& cloud, const GridNormalOptions& options,
                             GridNormals* initial) {
   CHECK(initial != nullptr);
-  RunStage(cloud, options, nullptr, initial);
+  RunStage(cloud, options, nullptr, nullptr, initial);
 }
 
 void RefineNormals(const GridCloud& cloud, const GridNormalOptions& options,
                    const GridNormals& initial, GridNormals* normals) {
   CHECK(normals != nullptr && normals != &initial);
   CHECK_EQ(initial.size(), cloud.size());
-  RunStage(cloud, options, &initial, normals);
+  RunStage(cloud, options, &initial, nullptr, normals);
 }
 
 void EstimateGridNormals(const GridCloud& cloud, const GridNormalOptions& options,
                          GridNormals* normals) {
+  CHECK(normals != nullptr);
   GridNormals initial;
-  EstimateInitialNormals(cloud, options, &initial);
-  RefineNormals(cloud, options, initial, normals);
+  std::vector<float> scales(cloud.size(), kNaN);  // Eq. (1) scales shared by both stages
+  RunStage(cloud, options, nullptr, &scales, &initial);
+  RunStage(cloud, options, &initial, &scales, normals);
 }
 
 }  // namespace edgefit
