@@ -21,6 +21,7 @@
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
+#include "edgefit/scene/model_scene.h"
 
 namespace edgefit {
 namespace {
@@ -56,16 +57,7 @@ Fixture& GetFixture() {
     floor.mesh_world.triangles = {{0, 1, 2}, {0, 2, 3}};
     floor.kind = "floor";
     scene.meshes.push_back(floor);
-    const std::vector<Pose> T_world_link = model.ForwardKinematics(q);
-    for (size_t k = 0; k < model.links().size(); ++k) {
-      if (model.links()[k].mesh.empty()) continue;
-      SceneMesh m;
-      m.mesh_world.Append(model.links()[k].mesh, T_world_link[k]);
-      m.label = LinkLabel(static_cast<int>(k));
-      m.link = static_cast<int>(k);
-      m.kind = "link";
-      scene.meshes.push_back(std::move(m));
-    }
+    AddModelToScene(model, model.ForwardKinematics(q), &scene);
     ScannerPlacementOptions placement;
     placement.count = 3;
     const std::vector<Pose> poses = PlaceScanners(model.BoundingBox(q), placement);

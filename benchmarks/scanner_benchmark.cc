@@ -16,6 +16,7 @@
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
+#include "edgefit/scene/model_scene.h"
 
 namespace edgefit {
 namespace {
@@ -50,16 +51,7 @@ Fixture& GetFixture() {
     Eigen::AlignedBox3d box;
     if (std::filesystem::exists(urdf) && LoadKinematicModel(urdf, {}, &model).ok()) {
       const std::vector<double> q = RandomJointValues(model, 1);
-      const std::vector<Pose> T_world_link = model.ForwardKinematics(q);
-      for (size_t k = 0; k < model.links().size(); ++k) {
-        if (model.links()[k].mesh.empty()) continue;
-        SceneMesh m;
-        m.mesh_world.Append(model.links()[k].mesh, T_world_link[k]);
-        m.label = LinkLabel(static_cast<int>(k));
-        m.link = static_cast<int>(k);
-        m.kind = "link";
-        f->scene.meshes.push_back(std::move(m));
-      }
+      AddModelToScene(model, model.ForwardKinematics(q), &f->scene);
       box = model.BoundingBox(q);
       f->what = "kuka_kr150r3100_2";
     } else {

@@ -10,7 +10,7 @@ edgefit_add_test(scanner_test
 # Posed URDF models, incl. the real KUKA in ${EDGEFIT_SHARED_DIR} (skipped when absent).
 edgefit_add_test(scanner_model_test
   SOURCES scanner/model_scan_test.cc
-  LIBS edgefit::scanner)
+  LIBS edgefit::scanner edgefit::scene)
 # Whole scenes as `edgefit scan` builds them: bundled assets and ../shared/robots.
 edgefit_add_test(scanner_scene_test
   SOURCES scanner/scene_scan_test.cc

@@ -8,6 +8,7 @@
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
+#include "edgefit/scene/model_scene.h"
 #include "scanner/scanner_test_util.h"
 
 namespace edgefit {
@@ -21,7 +22,7 @@ void CheckPointsOnTheirMeshes(const KinematicModel& model, const std::vector<dou
                               size_t min_link_points) {
   Scene scene;
   scene.meshes.push_back(testing_util::FloorMesh());
-  testing_util::AddPosedModel(model, q, T_world_base, &scene);
+  AddModelToScene(model, model.ForwardKinematics(q, T_world_base), &scene);
   ScannerPlacementOptions placement;
   placement.count = scanners;
   placement.seed = 5;

@@ -27,21 +27,6 @@ inline SceneMesh FloorMesh(double half = 20.0) {
   return m;
 }
 
-// One SceneMesh per link with a mesh, posed by forward kinematics.
-inline void AddPosedModel(const KinematicModel& model, const std::vector<double>& q,
-                          const Pose& T_world_base, Scene* scene) {
-  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
-  for (size_t k = 0; k < model.links().size(); ++k) {
-    if (model.links()[k].mesh.empty()) continue;
-    SceneMesh m;
-    m.mesh_world.Append(model.links()[k].mesh, T_world_link[k]);
-    m.label = LinkLabel(static_cast<int>(k));
-    m.link = static_cast<int>(k);
-    m.kind = "link";
-    scene->meshes.push_back(std::move(m));
-  }
-}
-
 // Closest point on triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5).
 inline Eigen::Vector3d ClosestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                               const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
