@@ -419,5 +419,34 @@ TEST(CostSolveTest, AxisPointPenaltyHoldsTheJoint) {
   EXPECT_NEAR(rotation[1], 0.0, 1e-6);
 }
 
+// Eq. (14): a and b on the parent's line (world x axis) and c on the plane
+// z = 0 leave only the translation along x free, so a data term pulling the
+// link by (0.3, 0.2, 0.1) moves it by (0.3, 0, 0) only.
+TEST(CostSolveTest, PrismaticPenaltiesLeaveOnlyTheAxialDof) {
+  const Vector3d a_link(0, 0, 0), b_link(1, 0, 0), c_link(0, 1, 0);
+  const Vector3d p_link(0.5, 0.5, 0.5);
+  double rotation[3] = {0.0, 0.0, 0.0};
+  double translation[3] = {0.0, 0.0, 0.0};
+  const double lambda = 1e8;
+  ceres::Problem problem;
+  problem.AddResidualBlock(PointToPointCost::Create(p_link, p_link + Vector3d(0.3, 0.2, 0.1), 1.0),
+                           nullptr, rotation, translation);
+  for (const Vector3d& axis_point : {a_link, b_link}) {
+    problem.AddResidualBlock(
+        PointToLineCost::Create(axis_point, Vector3d(-4, 0, 0), Vector3d(2, 0, 0), lambda), nullptr,
+        rotation, translation);
+  }
+  problem.AddResidualBlock(
+      PointToPlanePenaltyCost::Create(c_link, Vector3d(7, -3, 0), Vector3d(0, 0, 1), lambda),
+      nullptr, rotation, translation);
+  ceres::Solver::Summary summary;
+  ceres::Solve(TightOptions(), &problem, &summary);
+  ASSERT_TRUE(summary.IsSolutionUsable()) << summary.BriefReport();
+  EXPECT_NEAR(translation[0], 0.3, 1e-6);
+  EXPECT_NEAR(translation[1], 0.0, 1e-6);
+  EXPECT_NEAR(translation[2], 0.0, 1e-6);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(rotation[k], 0.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace edgefit
