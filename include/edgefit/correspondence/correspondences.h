@@ -1,0 +1,51 @@
+// Point-to-scan correspondences: for each source point (CAD samples of a
+// posed link, world frame) the nearest valid scan point, gated by distance,
+// carrying the target cell's edge weight w_edge (paper Sec. 5.2, Eq. (9)).
+//
+// Two searches share this output type (correspondence_search.h):
+//   lattice (paper Sec. 5.2.1, "we leverage the 2D lattice of the TLS data
+//     instead of a 3D search"): each query is projected onto every scan's
+//     angular lattice and only a (2 window + 1)^2 block of cells around it is
+//     searched, O(1) per query and scan with no index to build;
+//   kd-tree: exact nearest neighbour among the valid points of all scans
+//     inside a crop box (reference, and fallback for unorganized clouds).
+#ifndef EDGEFIT_CORRESPONDENCE_CORRESPONDENCES_H_
+#define EDGEFIT_CORRESPONDENCE_CORRESPONDENCES_H_
+
+#include <string>
+#include <vector>
+
+namespace edgefit {
+
+// One matched source point.
+struct Correspondence {
+  int source = -1;       // index into the query points
+  int scan = -1;         // index into ScanSet::scans
+  int cell = -1;         // cell index in that scan (col * rows + row)
+  float distance = 0.f;  // Euclidean distance source -> scan point [m]
+  float weight = 1.f;    // w_edge of the target cell (1 without weights)
+};
+
+struct CorrespondenceOptions {
+  // Matches farther than this are rejected [m]. 5 cm keeps the rough
+  // registration's tau_dist (Eq. (9)) inliers and near outliers while
+  // dropping hits on unrelated surfaces.
+  double max_distance = 0.05;
+  // Lattice search: half-size of the searched cell block [cells]; the block
+  // is (2 window + 1)^2. At the paper's ~1.7 mm spacing, 2 cells reach
+  // ~3.4 mm across the surface, enough for CAD samples within a few mm of
+  // the scanned surface (correspondence_test measures >= 99% exact nearest).
+  int window = 2;
+  // true: lattice search (paper Sec. 5.2.1); false: kd-tree over the crop.
+  bool use_lattice = true;
+
+  bool IsValid(std::string* error) const;
+};
+
+// Optional per-scan, per-cell target weights w_edge (cell index order), as
+// the edge detector writes them; nullptr means weight 1 everywhere.
+using CellWeights = std::vector<std::vector<float>>;
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_CORRESPONDENCE_CORRESPONDENCES_H_
