@@ -14,14 +14,11 @@
 #include <cstdint>
 #include <memory>
 
+#include "bundled_robot_scan.h"
+#include "edgefit/core/split_mix64.h"
 #include "edgefit/correspondence/kdtree_search.h"
 #include "edgefit/correspondence/lattice_search.h"
-#include "edgefit/model/joint_values.h"
 #include "edgefit/model/surface_sampler.h"
-#include "edgefit/model/urdf_loader.h"
-#include "edgefit/scanner/scanner_placement.h"
-#include "edgefit/scanner/virtual_scanner.h"
-#include "edgefit/scene/model_scene.h"
 
 namespace edgefit {
 namespace {
@@ -38,52 +35,23 @@ struct Fixture {
   Eigen::AlignedBox3d crop_world;
 };
 
-// SplitMix64 -> [-1, 1): a fixed offset per source, independent of threads.
+// [-1, 1) from Mix64: a fixed offset per source, independent of threads.
 float Jitter(uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  x ^= x >> 31;
-  return static_cast<float>(static_cast<double>(x >> 11) * 0x1.0p-53 * 2.0 - 1.0);
+  return static_cast<float>(static_cast<double>(Mix64(x + 0x9e3779b97f4a7c15ULL) >> 11) *
+                                0x1.0p-53 * 2.0 -
+                            1.0);
 }
 
 Fixture& GetFixture() {
   static Fixture* fixture = [] {
     auto* f = new Fixture;
-    KinematicModel model;
-    CHECK(LoadKinematicModel(std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/robot.urdf", {},
-                             &model)
-              .ok());
-    std::vector<double> q = model.ZeroJoints();
-    CHECK(ParseJointAssignments("joint_1=0,joint_2=0,joint_3=-0.45,joint_4=0,joint_5=1.55,joint_6=0",
-                                model, &q)
-              .ok());
-    CHECK(model.ResolveDependentJoints(&q).ok());
-    const std::vector<Pose> T_world_link = model.ForwardKinematics(q);
-    Scene scene;
-    SceneMesh floor;
-    floor.mesh_world.vertices = {{-30, -30, 0}, {30, -30, 0}, {30, 30, 0}, {-30, 30, 0}};
-    floor.mesh_world.triangles = {{0, 1, 2}, {0, 2, 3}};
-    floor.kind = "floor";
-    scene.meshes.push_back(floor);
-    AddModelToScene(model, T_world_link, &scene);
-    const Eigen::AlignedBox3d box = model.BoundingBox(q);
-    ScannerPlacementOptions placement;
-    placement.count = 3;
-    const std::vector<Pose> poses = PlaceScanners(box, placement);
-    VirtualScanOptions options;
-    std::unique_ptr<VirtualScanner> scanner;
-    CHECK(VirtualScanner::Create(scene, options, &scanner).ok());
-    VirtualScan scan;
-    for (int i = 0; i < 6; ++i) {  // spacing for ~5 M valid points
-      CHECK(scanner->Scan(poses, options, &scan).ok());
-      const double scale = std::sqrt(static_cast<double>(scan.scans.TotalValid()) / 5.0e6);
-      if (std::abs(scale - 1.0) < 0.02) break;
-      options.spacing *= scale;
-    }
-    f->scans = std::move(scan.scans);
+    BundledRobotScan robot = ScanBundledRobot();
+    const KinematicModel& model = robot.model;
+    const std::vector<Pose> T_world_link = model.ForwardKinematics(robot.q);
+    const Eigen::AlignedBox3d box = model.BoundingBox(robot.q);
+    f->scans = std::move(robot.scans);
     LOG(INFO) << "scan: " << f->scans.TotalValid() << " valid points, spacing "
-              << options.spacing * 1e3 << " mm";
+              << robot.spacing * 1e3 << " mm";
 
     SamplingOptions sampling;
     sampling.spacing = 0.002;

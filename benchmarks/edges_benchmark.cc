@@ -13,15 +13,11 @@
 #include <cmath>
 #include <nanoflann.hpp>
 
+#include "bundled_robot_scan.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/edges/edge_score.h"
 #include "edgefit/edges/grid_normals.h"
 #include "edgefit/edges/region_growing.h"
-#include "edgefit/model/joint_values.h"
-#include "edgefit/model/urdf_loader.h"
-#include "edgefit/scanner/scanner_placement.h"
-#include "edgefit/scanner/virtual_scanner.h"
-#include "edgefit/scene/model_scene.h"
 
 namespace edgefit {
 namespace {
@@ -43,37 +39,9 @@ struct Fixture {
 Fixture& GetFixture() {
   static Fixture* fixture = [] {
     auto* f = new Fixture;
-    const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
-    KinematicModel model;
-    CHECK(LoadKinematicModel(dir + "robot.urdf", {}, &model).ok());
-    std::vector<double> q = model.ZeroJoints();
-    // postures.json "home" without its gun_joint (the gun is a separate URDF).
-    CHECK(ParseJointAssignments("joint_1=0,joint_2=0,joint_3=-0.45,joint_4=0,joint_5=1.55,joint_6=0",
-                                model, &q).ok());
-    CHECK(model.ResolveDependentJoints(&q).ok());
-    Scene scene;
-    SceneMesh floor;
-    floor.mesh_world.vertices = {{-30, -30, 0}, {30, -30, 0}, {30, 30, 0}, {-30, 30, 0}};
-    floor.mesh_world.triangles = {{0, 1, 2}, {0, 2, 3}};
-    floor.kind = "floor";
-    scene.meshes.push_back(floor);
-    AddModelToScene(model, model.ForwardKinematics(q), &scene);
-    ScannerPlacementOptions placement;
-    placement.count = 3;
-    const std::vector<Pose> poses = PlaceScanners(model.BoundingBox(q), placement);
-    VirtualScanOptions options;
-    std::unique_ptr<VirtualScanner> scanner;
-    CHECK(VirtualScanner::Create(scene, options, &scanner).ok());
-    VirtualScan scan;
-    for (int i = 0; i < 6; ++i) {  // spacing for ~5 M valid points
-      CHECK(scanner->Scan(poses, options, &scan).ok());
-      const double scale = std::sqrt(static_cast<double>(scan.scans.TotalValid()) / 5.0e6);
-      if (std::abs(scale - 1.0) < 0.02) break;
-      options.spacing *= scale;
-    }
-    f->spacing = options.spacing;
-    f->scans = std::move(scan.scans);
-    f->options.tau_dot = 0.8;
+    BundledRobotScan robot = ScanBundledRobot();
+    f->spacing = robot.spacing;
+    f->scans = std::move(robot.scans);
     GridNormalOptions normal_options;
     EdgeScoreOptions score_options;
     score_options.max_half_window = 16;
