@@ -1,0 +1,139 @@
+#include "solvers/icp_step.h"
+
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+#include <glog/logging.h>
+
+#include <cmath>
+
+#include "costs/axis_point_cost.h"
+#include "costs/point_to_line_cost.h"
+#include "costs/point_to_plane_cost.h"
+#include "costs/point_to_plane_penalty_cost.h"
+#include "costs/point_to_point_cost.h"
+#include "costs/prismatic_point_cost.h"
+#include "costs/revolute_point_cost.h"
+#include "solvers/rotation_manifold.h"
+
+namespace edgefit {
+
+bool SolvesJointValue(const LinkMotion& motion, const WeightedIcpOptions& options) {
+  return motion.constrained() && options.parameterization == JointParameterization::kJointSpace;
+}
+
+namespace {
+
+// Eq. (10): the axis points a, b of the child must stay where the parent
+// puts them (a0 = T_world_joint a, b0 = T_world_joint b: a rotation about
+// the axis leaves its points in place).
+void AddRevolutePenalties(const IcpStepInput& input, double lambda,
+                          IcpParameters* parameters, ceres::Problem* problem) {
+  const LinkMotion& motion = *input.motion;
+  for (const double side : {-1.0, 1.0}) {
+    const Eigen::Vector3d a_link =
+        input.axis_center_link + side * input.axis_half_span * motion.axis_joint;
+    problem->AddResidualBlock(AxisPointCost::Create(a_link, motion.T_world_joint * a_link, lambda),
+                              nullptr, parameters->rotation_world_link,
+                              parameters->translation_world_link);
+  }
+}
+
+// Eq. (14): the axis points a, b stay on the parent's joint line L; the
+// off-axis point c stays on the plane P spanned by L and c's offset, which
+// locks the rotation about the axis.
+void AddPrismaticPenalties(const IcpStepInput& input, double lambda,
+                           IcpParameters* parameters, ceres::Problem* problem) {
+  const LinkMotion& motion = *input.motion;
+  const Eigen::Vector3d& axis = motion.axis_joint;
+  const Eigen::Vector3d l0_world = motion.T_world_joint.translation();
+  const Eigen::Vector3d l_world = motion.T_world_joint.linear() * axis;
+  for (const double side : {-1.0, 1.0}) {
+    const Eigen::Vector3d a_link = input.axis_center_link + side * input.axis_half_span * axis;
+    problem->AddResidualBlock(PointToLineCost::Create(a_link, l0_world, l_world, lambda), nullptr,
+                              parameters->rotation_world_link,
+                              parameters->translation_world_link);
+  }
+  const Eigen::Vector3d u = axis.unitOrthogonal();
+  const Eigen::Vector3d c_link = input.axis_center_link + input.axis_half_span * u;
+  const Eigen::Vector3d n_world = motion.T_world_joint.linear() * axis.cross(u);
+  problem->AddResidualBlock(
+      PointToPlanePenaltyCost::Create(c_link, motion.T_world_joint * c_link, n_world, lambda),
+      nullptr, parameters->rotation_world_link, parameters->translation_world_link);
+}
+
+}  // namespace
+
+bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* final_cost) {
+  CHECK(input.p_link != nullptr && input.correspondences != nullptr && input.scans != nullptr &&
+        input.motion != nullptr && input.options != nullptr && input.loss != nullptr);
+  const WeightedIcpOptions& options = *input.options;
+  const LinkMotion& motion = *input.motion;
+  const bool joint_space = SolvesJointValue(motion, options);
+
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+
+  double total_weight = 0.0;
+  for (const Correspondence& m : *input.correspondences) {
+    const OrganizedScan& scan = input.scans->scans[static_cast<size_t>(m.scan)];
+    const size_t cell = static_cast<size_t>(m.cell);
+    const Eigen::Vector3d p_link = (*input.p_link)[static_cast<size_t>(m.source)].cast<double>();
+    const Eigen::Vector3d q_world = scan.PointWorld(cell);
+    const double w_edge = options.uniform_weights ? 1.0 : static_cast<double>(m.weight);
+    total_weight += w_edge;
+    if (joint_space) {
+      ceres::CostFunction* cost =
+          motion.type == LinkMotion::Type::kRevolute
+              ? RevolutePointCost::Create(motion.T_world_joint, Pose::Identity(),
+                                          motion.axis_joint, p_link, q_world, w_edge)
+              : PrismaticPointCost::Create(motion.T_world_joint, Pose::Identity(),
+                                           motion.axis_joint, p_link, q_world, w_edge);
+      problem.AddResidualBlock(cost, input.loss, &parameters->q);
+      continue;
+    }
+    ceres::CostFunction* cost = nullptr;
+    if (options.point_to_plane) {
+      const Eigen::Vector3f& n_scanner = (*input.normals_scanner)[static_cast<size_t>(m.scan)][cell];
+      if (!std::isnan(n_scanner.x())) {
+        const Eigen::Vector3d n_world = scan.T_world_scanner().linear() * n_scanner.cast<double>();
+        cost = PointToPlaneCost::Create(p_link, q_world, n_world, w_edge);
+      }
+    }
+    if (cost == nullptr) cost = PointToPointCost::Create(p_link, q_world, w_edge);
+    problem.AddResidualBlock(cost, input.loss, parameters->rotation_world_link,
+                             parameters->translation_world_link);
+  }
+
+  if (joint_space) {
+    if (motion.has_limits) {
+      problem.SetParameterLowerBound(&parameters->q, 0, motion.lower);
+      problem.SetParameterUpperBound(&parameters->q, 0, motion.upper);
+    }
+  } else {
+    problem.SetManifold(parameters->rotation_world_link, NewAngleAxisManifold());
+    // lambda relative to the data weight (WeightedIcpOptions::lambda).
+    const double penalty_weight = options.lambda * total_weight;
+    if (motion.type == LinkMotion::Type::kRevolute) {
+      AddRevolutePenalties(input, penalty_weight, parameters, &problem);
+    } else if (motion.type == LinkMotion::Type::kPrismatic) {
+      AddPrismaticPenalties(input, penalty_weight, parameters, &problem);
+    }
+  }
+
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::DENSE_QR;
+  solver_options.max_num_iterations = options.solver_iterations;
+  solver_options.num_threads = 1;  // deterministic sums (weighted_icp.h)
+  solver_options.function_tolerance = 1e-14;
+  solver_options.gradient_tolerance = 1e-16;
+  solver_options.parameter_tolerance = 1e-14;
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+  if (!summary.IsSolutionUsable()) return false;
+  *final_cost = summary.final_cost;
+  return true;
+}
+
+}  // namespace edgefit

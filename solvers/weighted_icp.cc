@@ -1,0 +1,231 @@
+#include "solvers/weighted_icp.h"
+
+#include <ceres/rotation.h>
+#include <glog/logging.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "costs/robust_loss.h"
+#include "solvers/icp_step.h"
+
+namespace edgefit {
+
+const char* JointParameterizationName(JointParameterization parameterization) {
+  switch (parameterization) {
+    case JointParameterization::kJointSpace:
+      return "joint_space";
+    case JointParameterization::kPoseWithPenalties:
+      return "pose_penalty";
+  }
+  return "?";
+}
+
+Status ParseJointParameterization(const std::string& name, JointParameterization* out) {
+  for (const JointParameterization p :
+       {JointParameterization::kJointSpace, JointParameterization::kPoseWithPenalties}) {
+    if (name == JointParameterizationName(p)) {
+      *out = p;
+      return Status::Ok();
+    }
+  }
+  return Status::Error("unknown joint parameterisation '" + name +
+                       "' (valid: joint_space, pose_penalty)");
+}
+
+const char* IcpStopReasonName(IcpStopReason reason) {
+  switch (reason) {
+    case IcpStopReason::kConverged:
+      return "converged";
+    case IcpStopReason::kMaxIterations:
+      return "max_iterations";
+    case IcpStopReason::kTooFewCorrespondences:
+      return "too_few_correspondences";
+    case IcpStopReason::kSolverFailed:
+      return "solver_failed";
+  }
+  return "?";
+}
+
+bool WeightedIcpOptions::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = message;
+    return false;
+  };
+  if (max_iterations < 1) return fail("max_iterations must be at least 1");
+  if (!(convergence_displacement >= 0.0)) return fail("convergence_displacement must be >= 0");
+  if (min_correspondences < 1) return fail("min_correspondences must be at least 1");
+  if (!correspondence.IsValid(error)) return false;
+  if (!(lambda >= 0.0) || !std::isfinite(lambda)) return fail("lambda must be finite and >= 0");
+  if (solver_iterations < 1) return fail("solver_iterations must be at least 1");
+  if (!(crop_margin >= 0.0) || !std::isfinite(crop_margin)) {
+    return fail("crop_margin must be finite and >= 0");
+  }
+  std::unique_ptr<ceres::LossFunction> loss_function;
+  const Status status = MakeLoss(loss, loss_scale, &loss_function);
+  if (!status.ok()) return fail(status.message());
+  return true;
+}
+
+std::string WeightedIcpSummary::BriefReport() const {
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "%d iterations (%s), %zu/%zu inliers (%.1f%%), RMS %.3f mm, cost %.6g, %.3f s",
+                iterations, IcpStopReasonName(stop_reason), inliers, source_points,
+                100.0 * inlier_share, rms * 1e3, final_cost, seconds);
+  return line;
+}
+
+namespace {
+
+Pose PoseFromParameters(const IcpParameters& parameters) {
+  double R[9];  // column-major
+  ceres::AngleAxisToRotationMatrix(parameters.rotation_world_link, R);
+  Pose T = Pose::Identity();
+  T.linear() = Eigen::Map<const Eigen::Matrix3d>(R);
+  T.translation() = Eigen::Map<const Eigen::Vector3d>(parameters.translation_world_link);
+  return T;
+}
+
+void SetPoseParameters(const Pose& T, IcpParameters* parameters) {
+  const Eigen::Matrix3d R = T.linear();  // column-major, as ceres expects
+  ceres::RotationMatrixToAngleAxis(R.data(), parameters->rotation_world_link);
+  Eigen::Map<Eigen::Vector3d>(parameters->translation_world_link) = T.translation();
+}
+
+// Largest distance a point of `corners_link` moves between two poses.
+double MaxDisplacement(const std::array<Eigen::Vector3d, 8>& corners_link, const Pose& before,
+                       const Pose& after) {
+  double max_distance = 0.0;
+  for (const Eigen::Vector3d& c : corners_link) {
+    max_distance = std::max(max_distance, (after * c - before * c).norm());
+  }
+  return max_distance;
+}
+
+}  // namespace
+
+WeightedIcp::WeightedIcp(const ScanSet* scans, CorrespondenceSearch* search,
+                         const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner)
+    : scans_(scans), search_(search), normals_scanner_(normals_scanner) {
+  CHECK(scans_ != nullptr && search_ != nullptr);
+}
+
+Status WeightedIcp::Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMotion& motion,
+                        const WeightedIcpOptions& options, LinkState* state,
+                        WeightedIcpSummary* summary) {
+  CHECK(state != nullptr && summary != nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  if (!options.IsValid(&error)) return Status::Error("weighted ICP: " + error);
+  if (p_link.empty()) return Status::Error("weighted ICP: the link has no CAD samples");
+  if (options.point_to_plane && normals_scanner_ == nullptr) {
+    return Status::Error("weighted ICP: point_to_plane needs target normals");
+  }
+  const bool joint_space = SolvesJointValue(motion, options);
+  if (options.point_to_plane && joint_space) {
+    return Status::Error(
+        "weighted ICP: point_to_plane needs the pose_penalty parameterisation on a joint");
+  }
+  std::unique_ptr<ceres::LossFunction> loss;
+  EDGEFIT_RETURN_IF_ERROR(MakeLoss(options.loss, options.loss_scale, &loss));
+
+  *summary = WeightedIcpSummary();
+  summary->source_points = p_link.size();
+
+  // The samples' box in the link frame: its corners bound every sample's
+  // motion, its centre anchors the axis points of the penalties.
+  Eigen::AlignedBox3d box_link;
+  for (const Eigen::Vector3f& p : p_link) box_link.extend(p.cast<double>());
+  std::array<Eigen::Vector3d, 8> corners_link;
+  for (int i = 0; i < 8; ++i) {
+    corners_link[static_cast<size_t>(i)] =
+        box_link.corner(static_cast<Eigen::AlignedBox3d::CornerType>(i));
+  }
+  IcpStepInput input;
+  input.p_link = &p_link;
+  input.correspondences = &correspondences_;
+  input.scans = scans_;
+  input.normals_scanner = normals_scanner_;
+  input.motion = &motion;
+  input.options = &options;
+  input.loss = loss.get();
+  const Eigen::Vector3d centre = box_link.center();
+  input.axis_center_link = motion.axis_joint * motion.axis_joint.dot(centre);
+  input.axis_half_span = std::max(0.05, 0.5 * box_link.diagonal().norm());
+
+  // Initial estimate.
+  const double q_initial = motion.Clamp(state->q);
+  Pose T_world_link = motion.constrained() ? motion.PoseAt(q_initial) : state->T_world_link;
+  IcpParameters parameters;
+  parameters.q = q_initial;
+  SetPoseParameters(T_world_link, &parameters);
+
+  auto pose_samples = [&](const Pose& T) {
+    q_world_.resize(p_link.size());
+    const Eigen::Matrix3f R = T.linear().cast<float>();
+    const Eigen::Vector3f t = T.translation().cast<float>();
+    for (size_t i = 0; i < p_link.size(); ++i) q_world_[i] = R * p_link[i] + t;
+  };
+  Eigen::AlignedBox3d crop_world;
+  for (int i = 0; i < 8; ++i) crop_world.extend(T_world_link * corners_link[static_cast<size_t>(i)]);
+  const double grow = options.correspondence.max_distance + options.crop_margin;
+  crop_world.min().array() -= grow;
+  crop_world.max().array() += grow;
+
+  summary->stop_reason = IcpStopReason::kMaxIterations;
+  for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
+    pose_samples(T_world_link);
+    search_->Find(q_world_, crop_world, options.correspondence, &correspondences_);
+    if (correspondences_.size() < static_cast<size_t>(options.min_correspondences)) {
+      summary->stop_reason = IcpStopReason::kTooFewCorrespondences;
+      break;
+    }
+    if (!SolveIcpStep(input, &parameters, &summary->final_cost)) {
+      summary->stop_reason = IcpStopReason::kSolverFailed;
+      break;
+    }
+    ++summary->iterations;
+    const Pose T_next = joint_space ? motion.PoseAt(parameters.q) : PoseFromParameters(parameters);
+    const double displacement = MaxDisplacement(corners_link, T_world_link, T_next);
+    T_world_link = T_next;
+    if (displacement <= options.convergence_displacement) {
+      summary->stop_reason = IcpStopReason::kConverged;
+      break;
+    }
+  }
+
+  // The paper's projection onto the joint (Sec. 5.2.2, 6.2.2).
+  double q = parameters.q;
+  if (motion.constrained() && !joint_space) {
+    q = motion.Project(T_world_link, q_initial);
+    const Pose T_projected = motion.PoseAt(q);
+    summary->projection_shift = MaxDisplacement(corners_link, T_world_link, T_projected);
+    T_world_link = T_projected;
+  }
+
+  // Quality at the returned pose.
+  pose_samples(T_world_link);
+  search_->Find(q_world_, crop_world, options.correspondence, &correspondences_);
+  double sum_squared = 0.0;
+  for (const Correspondence& m : correspondences_) {
+    sum_squared += static_cast<double>(m.distance) * static_cast<double>(m.distance);
+  }
+  summary->inliers = correspondences_.size();
+  summary->inlier_share =
+      static_cast<double>(summary->inliers) / static_cast<double>(summary->source_points);
+  summary->rms =
+      summary->inliers > 0 ? std::sqrt(sum_squared / static_cast<double>(summary->inliers)) : 0.0;
+
+  state->T_world_link = T_world_link;
+  state->q = motion.constrained() ? q : 0.0;
+  summary->seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+}  // namespace edgefit

@@ -1,0 +1,155 @@
+// The weighted, constrained ICP engine every precise registration stage
+// calls (paper Sec. 5.1.2, 5.2.2, 6.1, 6.2.2). Each iteration:
+//   1. pose the link's CAD samples p_link with the current estimate;
+//   2. correspondences: nearest scan point of each sample through the scan
+//      lattice or a cropped kd-tree, gated by distance, each carrying the
+//      target cell's edge weight w_edge (correspondence_search.h);
+//   3. one Ceres problem: a data residual per correspondence, Eq. (8)
+//      sqrt(w_edge) (R p + t - q) or its point-to-plane variant, under the
+//      chosen loss, plus, for a link on a joint, the kinematic constraint;
+//   4. stop when no sample moved more than convergence_displacement.
+//
+// The constraint of a link on a joint (LinkMotion) has two parameterisations:
+//   kJointSpace         the joint value is the only parameter
+//                       (costs/revolute_point_cost.h, prismatic_point_cost.h):
+//                       the link never leaves its joint;
+//   kPoseWithPenalties  the paper's: a 6-DoF pose (angle-axis on the
+//                       rotation_manifold.h manifold + translation) with the
+//                       Eq. (10) axis-point penalties (revolute) or the
+//                       Eq. (14) line and plane penalties (prismatic), then
+//                       the projection onto the joint (LinkMotion::Project).
+// BENCHMARK.md ("ICP engine") compares them; the default is the better one.
+//
+// Deterministic for any thread count: the correspondence search is, and
+// Ceres runs single-threaded (its multi-threaded cost and gradient sums
+// depend on the schedule); the problems are small (6 or 1 parameters).
+#ifndef EDGEFIT_SOLVERS_WEIGHTED_ICP_H_
+#define EDGEFIT_SOLVERS_WEIGHTED_ICP_H_
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/correspondence/correspondence_search.h"
+#include "edgefit/scan/organized_scan.h"
+#include "solvers/link_motion.h"
+
+namespace edgefit {
+
+enum class JointParameterization { kJointSpace, kPoseWithPenalties };
+
+// "joint_space" / "pose_penalty".
+const char* JointParameterizationName(JointParameterization parameterization);
+Status ParseJointParameterization(const std::string& name, JointParameterization* out);
+
+struct WeightedIcpOptions {
+  // ICP iterations (correspondence search + Ceres solve) at most.
+  int max_iterations = 30;
+  // Converged when no CAD sample moved more than this in an iteration [m]
+  // (measured exactly: a rigid motion moves a box's points most at a corner,
+  // so the corners of the samples' box are checked).
+  double convergence_displacement = 1e-7;
+  // Fewer gated correspondences than this stops the fit (kTooFewCorrespondences).
+  int min_correspondences = 12;
+  // Search: lattice or kd-tree, gate distance, lattice window.
+  CorrespondenceOptions correspondence;
+  // --weighting=uniform: every data residual gets weight 1 instead of w_edge.
+  bool uniform_weights = false;
+  // Loss of the data residuals by name (costs/robust_loss.h: trivial, huber,
+  // cauchy, soft_l1, arctan, tukey) and its scale in residual units
+  // (metres for w_edge = 1; a residual carries sqrt(w_edge) |R p + t - q|).
+  std::string loss = "trivial";
+  double loss_scale = 0.005;
+  // Point-to-plane data residuals using the target normals given to the
+  // engine (from the edge stage); cells without a normal fall back to
+  // point-to-point. The 6-DoF residuals only: not with kJointSpace.
+  bool point_to_plane = false;
+  // Constraint of links on joints (ignored for LinkMotion::kFree).
+  JointParameterization parameterization = JointParameterization::kJointSpace;
+  // kPoseWithPenalties: weight of the Eq. (10) / (14) penalties relative to
+  // the data: each penalty residual is scaled by sqrt(lambda * W), W the sum
+  // of the data weights of the iteration, so lambda = 1 makes a shift of the
+  // axis cost as much as the same shift of every sample, for any sample
+  // count (dimensionless).
+  double lambda = 1.0;
+  // Levenberg-Marquardt iterations per Ceres solve (the correspondences
+  // change after each solve, so exact inner convergence is wasted).
+  int solver_iterations = 10;
+  // kd-tree crop: the box of the samples at the initial pose grown by
+  // correspondence.max_distance + crop_margin [m], fixed for the whole fit
+  // so the tree is built once.
+  double crop_margin = 0.1;
+
+  bool IsValid(std::string* error) const;
+};
+
+enum class IcpStopReason {
+  kConverged,              // displacement below convergence_displacement
+  kMaxIterations,          // max_iterations reached
+  kTooFewCorrespondences,  // fewer than min_correspondences matches
+  kSolverFailed,           // Ceres returned no usable solution
+};
+const char* IcpStopReasonName(IcpStopReason reason);  // "converged", ...
+
+struct WeightedIcpSummary {
+  int iterations = 0;  // Ceres solves done
+  IcpStopReason stop_reason = IcpStopReason::kMaxIterations;
+  // Ceres cost 1/2 sum rho(|r|^2) at the end of the last solve (data plus
+  // penalties; before the projection of kPoseWithPenalties).
+  double final_cost = 0.0;
+  // At the returned pose: gated correspondences, their share of the samples,
+  // and their RMS distance [m] (unweighted).
+  size_t source_points = 0;
+  size_t inliers = 0;
+  double inlier_share = 0.0;
+  double rms = 0.0;
+  // kPoseWithPenalties on a joint: largest distance a sample moved when the
+  // 6-DoF result was projected onto the joint [m] (0 otherwise), a measure
+  // of how far the penalties let the link leave its joint.
+  double projection_shift = 0.0;
+  double seconds = 0.0;  // wall time of Fit [s]
+
+  // One line: iterations, stop reason, inliers, RMS [mm], cost.
+  std::string BriefReport() const;
+};
+
+// The estimate the engine refines: T_world_link, and the joint value q
+// (radians or metres) for a link on a joint, where T_world_link =
+// motion.PoseAt(q).
+struct LinkState {
+  Pose T_world_link = Pose::Identity();
+  double q = 0.0;
+};
+
+class WeightedIcp {
+ public:
+  // All borrowed and must outlive the engine. `search` holds the scans and
+  // the target weights; `normals_scanner` (nullptr: none) holds unit target
+  // normals per scan per cell in the scanner frame, NaN where undefined
+  // (EdgeDetectionResult::normals), for point_to_plane.
+  WeightedIcp(const ScanSet* scans, CorrespondenceSearch* search,
+              const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner = nullptr);
+
+  // Refines *state for the link whose CAD samples are p_link (link frame
+  // [m]) moving as `motion`. The initial estimate is state->T_world_link for
+  // a free link and state->q (clamped into the limits) on a joint; on return
+  // both hold the result. Errors (state unchanged): invalid options, no
+  // samples, point_to_plane without normals or with kJointSpace on a joint.
+  // A fit that stops early is no error: see summary->stop_reason.
+  Status Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMotion& motion,
+             const WeightedIcpOptions& options, LinkState* state,
+             WeightedIcpSummary* summary);
+
+ private:
+  const ScanSet* scans_;
+  CorrespondenceSearch* search_;
+  const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner_;
+  std::vector<Eigen::Vector3f> q_world_;       // posed samples, reused
+  std::vector<Correspondence> correspondences_;  // reused
+};
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SOLVERS_WEIGHTED_ICP_H_

@@ -1,0 +1,8 @@
+# Weighted, constrained ICP engine (paper Sec. 5.1.2, 5.2.2, 6.2.2):
+# synthetic recovery to 1e-6 and within noise, parameterisations, stops,
+# determinism; the cable-tube outlier case on a virtual scan with edges.
+edgefit_add_test(solvers_test
+  SOURCES
+    solvers/link_motion_test.cc
+    solvers/weighted_icp_test.cc
+  LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
