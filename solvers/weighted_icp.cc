@@ -62,6 +62,7 @@ bool WeightedIcpOptions::IsValid(std::string* error) const {
   if (!correspondence.IsValid(error)) return false;
   if (!(lambda >= 0.0) || !std::isfinite(lambda)) return fail("lambda must be finite and >= 0");
   if (solver_iterations < 1) return fail("solver_iterations must be at least 1");
+  if (!(final_gate > 0.0) || !std::isfinite(final_gate)) return fail("final_gate must be > 0");
   if (!(crop_margin >= 0.0) || !std::isfinite(crop_margin)) {
     return fail("crop_margin must be finite and >= 0");
   }
@@ -74,8 +75,9 @@ bool WeightedIcpOptions::IsValid(std::string* error) const {
 std::string WeightedIcpSummary::BriefReport() const {
   char line[256];
   std::snprintf(line, sizeof(line),
-                "%d iterations (%s), %zu/%zu inliers (%.1f%%), RMS %.3f mm, cost %.6g, %.3f s",
-                iterations, IcpStopReasonName(stop_reason), inliers, source_points,
+                "%d iterations (%s), %zu/%zu visible samples inliers (%.1f%%), RMS %.3f mm, "
+                "cost %.6g, %.3f s",
+                iterations, IcpStopReasonName(stop_reason), inliers, visible_points,
                 100.0 * inlier_share, rms * 1e3, final_cost, seconds);
   return line;
 }
@@ -113,15 +115,60 @@ WeightedIcp::WeightedIcp(const ScanSet* scans, CorrespondenceSearch* search,
                          const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner)
     : scans_(scans), search_(search), normals_scanner_(normals_scanner) {
   CHECK(scans_ != nullptr && search_ != nullptr);
+  for (const OrganizedScan& scan : scans_->scans) {
+    T_scanner_world_.push_back(scan.T_world_scanner().inverse());
+    scanner_origins_world_.push_back(scan.T_world_scanner().translation());
+  }
 }
 
-Status WeightedIcp::Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMotion& motion,
+bool WeightedIcp::Sees(size_t s, const Eigen::Vector3d& q_world, const Eigen::Vector3d& n_world,
+                       WeightedIcpOptions::Visibility visibility, double gate) const {
+  const Pose& T_scanner_world = T_scanner_world_[s];
+  if (n_world.dot(scanner_origins_world_[s] - q_world) <= 0.0) return false;  // back face
+  const OrganizedScan& scan = scans_->scans[s];
+  if (visibility == WeightedIcpOptions::Visibility::kFacing || !scan.organized() ||
+      !scan.lattice().valid()) {
+    return true;
+  }
+  const Eigen::Vector3d q_scanner = T_scanner_world * q_world;
+  int row = 0, col = 0;
+  if (!scan.lattice().ProjectToCell(q_scanner, &row, &col)) return false;  // outside the window
+  const size_t cell = scan.Index(row, col);
+  if (!scan.IsValid(cell)) return false;  // the ray through q returned nothing
+  return static_cast<double>(scan.point_scanner(cell).norm()) >= q_scanner.norm() - gate;
+}
+
+void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
+                                WeightedIcpOptions::Visibility visibility, double gate) {
+  const Eigen::Matrix3d R = T_world_link.linear();
+  const Eigen::Vector3d& t = T_world_link.translation();
+  const bool filter = visibility != WeightedIcpOptions::Visibility::kAll &&
+                      samples.normals.size() == samples.points.size();
+  p_used_link_.clear();
+  q_world_.clear();
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    const Eigen::Vector3d q = R * samples.points[i].cast<double>() + t;
+    if (filter) {
+      const Eigen::Vector3d n = R * samples.normals[i].cast<double>();
+      bool seen = false;
+      for (size_t s = 0; s < T_scanner_world_.size() && !seen; ++s) {
+        seen = Sees(s, q, n, visibility, gate);
+      }
+      if (!seen) continue;
+    }
+    p_used_link_.push_back(samples.points[i]);
+    q_world_.push_back(q.cast<float>());
+  }
+}
+
+Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
                         const WeightedIcpOptions& options, LinkState* state,
                         WeightedIcpSummary* summary) {
   CHECK(state != nullptr && summary != nullptr);
   const auto start = std::chrono::steady_clock::now();
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("weighted ICP: " + error);
+  const std::vector<Eigen::Vector3f>& p_link = samples.points;
   if (p_link.empty()) return Status::Error("weighted ICP: the link has no CAD samples");
   if (options.point_to_plane && normals_scanner_ == nullptr) {
     return Status::Error("weighted ICP: point_to_plane needs target normals");
@@ -147,7 +194,7 @@ Status WeightedIcp::Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMo
         box_link.corner(static_cast<Eigen::AlignedBox3d::CornerType>(i));
   }
   IcpStepInput input;
-  input.p_link = &p_link;
+  input.p_link = &p_used_link_;
   input.correspondences = &correspondences_;
   input.scans = scans_;
   input.normals_scanner = normals_scanner_;
@@ -165,22 +212,18 @@ Status WeightedIcp::Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMo
   parameters.q = q_initial;
   SetPoseParameters(T_world_link, &parameters);
 
-  auto pose_samples = [&](const Pose& T) {
-    q_world_.resize(p_link.size());
-    const Eigen::Matrix3f R = T.linear().cast<float>();
-    const Eigen::Vector3f t = T.translation().cast<float>();
-    for (size_t i = 0; i < p_link.size(); ++i) q_world_[i] = R * p_link[i] + t;
-  };
   Eigen::AlignedBox3d crop_world;
   for (int i = 0; i < 8; ++i) crop_world.extend(T_world_link * corners_link[static_cast<size_t>(i)]);
   const double grow = options.correspondence.max_distance + options.crop_margin;
   crop_world.min().array() -= grow;
   crop_world.max().array() += grow;
 
+  CorrespondenceOptions gated = options.correspondence;
+  const double final_gate = std::min(options.final_gate, options.correspondence.max_distance);
   summary->stop_reason = IcpStopReason::kMaxIterations;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    pose_samples(T_world_link);
-    search_->Find(q_world_, crop_world, options.correspondence, &correspondences_);
+    SelectAndPose(samples, T_world_link, options.visibility, gated.max_distance);
+    search_->Find(q_world_, crop_world, gated, &correspondences_);
     if (correspondences_.size() < static_cast<size_t>(options.min_correspondences)) {
       summary->stop_reason = IcpStopReason::kTooFewCorrespondences;
       break;
@@ -193,7 +236,9 @@ Status WeightedIcp::Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMo
     const Pose T_next = joint_space ? motion.PoseAt(parameters.q) : PoseFromParameters(parameters);
     const double displacement = MaxDisplacement(corners_link, T_world_link, T_next);
     T_world_link = T_next;
-    if (displacement <= options.convergence_displacement) {
+    const bool at_final_gate = gated.max_distance <= final_gate;
+    gated.max_distance = std::max(final_gate, 0.5 * gated.max_distance);
+    if (at_final_gate && displacement <= options.convergence_displacement) {
       summary->stop_reason = IcpStopReason::kConverged;
       break;
     }
@@ -209,15 +254,19 @@ Status WeightedIcp::Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMo
   }
 
   // Quality at the returned pose.
-  pose_samples(T_world_link);
-  search_->Find(q_world_, crop_world, options.correspondence, &correspondences_);
+  gated.max_distance = final_gate;
+  SelectAndPose(samples, T_world_link, options.visibility, final_gate);
+  summary->visible_points = q_world_.size();
+  search_->Find(q_world_, crop_world, gated, &correspondences_);
   double sum_squared = 0.0;
   for (const Correspondence& m : correspondences_) {
     sum_squared += static_cast<double>(m.distance) * static_cast<double>(m.distance);
   }
   summary->inliers = correspondences_.size();
-  summary->inlier_share =
-      static_cast<double>(summary->inliers) / static_cast<double>(summary->source_points);
+  summary->inlier_share = summary->visible_points > 0
+                              ? static_cast<double>(summary->inliers) /
+                                    static_cast<double>(summary->visible_points)
+                              : 0.0;
   summary->rms =
       summary->inliers > 0 ? std::sqrt(sum_squared / static_cast<double>(summary->inliers)) : 0.0;
 

@@ -1,6 +1,7 @@
 // The weighted, constrained ICP engine every precise registration stage
 // calls (paper Sec. 5.1.2, 5.2.2, 6.1, 6.2.2). Each iteration:
-//   1. pose the link's CAD samples p_link with the current estimate;
+//   1. pose the link's CAD samples p_link with the current estimate, leaving
+//      out those no scanner could see (options.visibility);
 //   2. correspondences: nearest scan point of each sample through the scan
 //      lattice or a cropped kd-tree, gated by distance, each carrying the
 //      target cell's edge weight w_edge (correspondence_search.h);
@@ -33,6 +34,7 @@
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
 #include "edgefit/correspondence/correspondence_search.h"
+#include "edgefit/model/surface_sampler.h"
 #include "edgefit/scan/organized_scan.h"
 #include "solvers/link_motion.h"
 
@@ -53,8 +55,15 @@ struct WeightedIcpOptions {
   double convergence_displacement = 1e-7;
   // Fewer gated correspondences than this stops the fit (kTooFewCorrespondences).
   int min_correspondences = 12;
-  // Search: lattice or kd-tree, gate distance, lattice window.
+  // Search: lattice or kd-tree, lattice window, and the gate of the first
+  // iteration (max_distance [m]: about the error of the initial estimate).
   CorrespondenceOptions correspondence;
+  // The gate halves after every iteration down to final_gate [m], so that
+  // matches on unmodelled surfaces near the link (cables, covers, parts the
+  // CAD lacks) drop out once the estimate is close; convergence counts only
+  // at the final gate. 5 mm is 5 sigma of the paper's 1 mm scanner noise.
+  // A final_gate >= correspondence.max_distance keeps the gate fixed.
+  double final_gate = 0.005;
   // --weighting=uniform: every data residual gets weight 1 instead of w_edge.
   bool uniform_weights = false;
   // Loss of the data residuals by name (costs/robust_loss.h: trivial, huber,
@@ -77,6 +86,20 @@ struct WeightedIcpOptions {
   // Levenberg-Marquardt iterations per Ceres solve (the correspondences
   // change after each solve, so exact inner convergence is wasted).
   int solver_iterations = 10;
+  // Which samples take part in an iteration: only those some scanner could
+  // see at the current pose. CAD samples on faces no scanner saw (back
+  // faces, faces hidden by other parts of the link, by other links or by
+  // cables) have their nearest scan points on the visible faces next to
+  // them, a bias toward the scanners. A sample counts as seen by scan s when
+  //   its outward normal faces the scanner: n . (o_s - p) > 0, and
+  //   (organized scans) the scan's range at p's lattice cell is not shorter
+  //   than p's range by more than the gate: the scan's range image is the
+  //   z-buffer of the real scene, so whatever hid the sample, it is in it.
+  // kAll uses every sample; kFacing the normal test alone; kSeen both.
+  // Needs sample normals (SurfaceSamples::normals); without them every
+  // sample is used.
+  enum class Visibility { kAll, kFacing, kSeen };
+  Visibility visibility = Visibility::kSeen;
   // kd-tree crop: the box of the samples at the initial pose grown by
   // correspondence.max_distance + crop_margin [m], fixed for the whole fit
   // so the tree is built once.
@@ -99,10 +122,11 @@ struct WeightedIcpSummary {
   // Ceres cost 1/2 sum rho(|r|^2) at the end of the last solve (data plus
   // penalties; before the projection of kPoseWithPenalties).
   double final_cost = 0.0;
-  // At the returned pose: gated correspondences, their share of the samples,
+  // At the returned pose, with the final gate: gated correspondences, their share of the samples,
   // and their RMS distance [m] (unweighted).
-  size_t source_points = 0;
-  size_t inliers = 0;
+  size_t source_points = 0;   // all CAD samples
+  size_t visible_points = 0;  // samples a scanner could see at the returned pose
+  size_t inliers = 0;         // of the visible samples
   double inlier_share = 0.0;
   double rms = 0.0;
   // kPoseWithPenalties on a joint: largest distance a sample moved when the
@@ -132,13 +156,14 @@ class WeightedIcp {
   WeightedIcp(const ScanSet* scans, CorrespondenceSearch* search,
               const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner = nullptr);
 
-  // Refines *state for the link whose CAD samples are p_link (link frame
-  // [m]) moving as `motion`. The initial estimate is state->T_world_link for
+  // Refines *state for the link whose CAD samples are `samples` (link
+  // frame [m]; normals optional, for the visibility test) moving as
+  // `motion`. The initial estimate is state->T_world_link for
   // a free link and state->q (clamped into the limits) on a joint; on return
   // both hold the result. Errors (state unchanged): invalid options, no
   // samples, point_to_plane without normals or with kJointSpace on a joint.
   // A fit that stops early is no error: see summary->stop_reason.
-  Status Fit(const std::vector<Eigen::Vector3f>& p_link, const LinkMotion& motion,
+  Status Fit(const SurfaceSamples& samples, const LinkMotion& motion,
              const WeightedIcpOptions& options, LinkState* state,
              WeightedIcpSummary* summary);
 
@@ -146,8 +171,21 @@ class WeightedIcp {
   const ScanSet* scans_;
   CorrespondenceSearch* search_;
   const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner_;
-  std::vector<Eigen::Vector3f> q_world_;       // posed samples, reused
-  std::vector<Correspondence> correspondences_;  // reused
+  // Selects the samples used at pose T (WeightedIcpOptions::visibility)
+  // into p_used_link_ and poses them into q_world_; `gate` [m] is the
+  // occlusion tolerance.
+  void SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
+                     WeightedIcpOptions::Visibility visibility, double gate);
+  // Whether scan s could see q_world with outward normal n_world.
+  bool Sees(size_t s, const Eigen::Vector3d& q_world, const Eigen::Vector3d& n_world,
+            WeightedIcpOptions::Visibility visibility, double gate) const;
+
+  std::vector<Pose> T_scanner_world_;                // per scan
+  std::vector<Eigen::Vector3d> scanner_origins_world_;  // per scan
+  // Buffers reused between iterations and fits.
+  std::vector<Eigen::Vector3f> p_used_link_;    // the samples of the iteration
+  std::vector<Eigen::Vector3f> q_world_;        // the same, posed
+  std::vector<Correspondence> correspondences_;
 };
 
 }  // namespace edgefit

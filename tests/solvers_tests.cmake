@@ -6,3 +6,6 @@ edgefit_add_test(solvers_test
     solvers/link_motion_test.cc
     solvers/weighted_icp_test.cc
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
+edgefit_add_test(solvers_tube_test SINGLE_PROCESS
+  SOURCES solvers/tube_outlier_test.cc
+  LIBS edgefit::solvers edgefit::edges edgefit::scanner edgefit::scene edgefit::model glog::glog)

@@ -52,6 +52,8 @@ Synthetic MakeSynthetic(const Pose& T_world_link, double sigma) {
 WeightedIcpOptions KdTreeOptions() {
   WeightedIcpOptions options;
   options.correspondence.use_lattice = false;  // unorganized synthetic cloud
+  options.visibility = WeightedIcpOptions::Visibility::kAll;  // all samples are in the target
+  options.final_gate = 0.05;  // no outliers: a fixed gate
   options.max_iterations = 100;
   return options;
 }
@@ -67,7 +69,7 @@ FitOutput RunFit(const Synthetic& s, const LinkMotion& motion, const WeightedIcp
   WeightedIcp icp(&s.scans, &search);
   FitOutput out;
   out.state = initial;
-  const Status status = icp.Fit(s.samples.points, motion, options, &out.state, &out.summary);
+  const Status status = icp.Fit(s.samples, motion, options, &out.state, &out.summary);
   EXPECT_TRUE(status.ok()) << status.message();
   std::printf("  %s\n", out.summary.BriefReport().c_str());
   return out;
@@ -86,6 +88,7 @@ TEST(WeightedIcpTest, FreePoseRecoveredExactlyWithoutNoise) {
   EXPECT_LT(TranslationError(out.state.T_world_link, kTrueFreePose), 1e-6);
   EXPECT_LT(RotationErrorRad(out.state.T_world_link, kTrueFreePose), 1e-6);
   EXPECT_EQ(out.summary.inliers, s.samples.size());
+  EXPECT_EQ(out.summary.visible_points, s.samples.size());
   EXPECT_LT(out.summary.rms, 1e-6);
 }
 
@@ -214,7 +217,7 @@ TEST(WeightedIcpTest, PointToPlaneRecoversFreePose) {
   LinkState state;
   state.T_world_link = kTrueFreePose * PoseFromXyzRpy({0.01, -0.01, 0.005}, {0.02, 0.01, -0.02});
   WeightedIcpSummary summary;
-  ASSERT_TRUE(icp.Fit(s.samples.points, LinkMotion::Free(), options, &state, &summary).ok());
+  ASSERT_TRUE(icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary).ok());
   EXPECT_EQ(summary.stop_reason, IcpStopReason::kConverged) << summary.BriefReport();
   EXPECT_LT(TranslationError(state.T_world_link, kTrueFreePose), 1e-6);
   EXPECT_LT(RotationErrorRad(state.T_world_link, kTrueFreePose), 1e-6);
@@ -238,15 +241,15 @@ TEST(WeightedIcpTest, RejectsBadOptionsAndInputs) {
   WeightedIcpSummary summary;
   WeightedIcpOptions options = KdTreeOptions();
   options.loss = "l7";
-  Status status = icp.Fit(s.samples.points, LinkMotion::Free(), options, &state, &summary);
+  Status status = icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary);
   EXPECT_NE(status.message().find("unknown loss 'l7'"), std::string::npos) << status.message();
   options = KdTreeOptions();
   options.max_iterations = 0;
-  EXPECT_FALSE(icp.Fit(s.samples.points, LinkMotion::Free(), options, &state, &summary).ok());
+  EXPECT_FALSE(icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary).ok());
   options = KdTreeOptions();
-  EXPECT_FALSE(icp.Fit({}, LinkMotion::Free(), options, &state, &summary).ok());
+  EXPECT_FALSE(icp.Fit(SurfaceSamples(), LinkMotion::Free(), options, &state, &summary).ok());
   options.point_to_plane = true;  // no normals given to the engine
-  status = icp.Fit(s.samples.points, LinkMotion::Free(), options, &state, &summary);
+  status = icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary);
   EXPECT_NE(status.message().find("normals"), std::string::npos) << status.message();
   JointParameterization parameterization;
   EXPECT_TRUE(ParseJointParameterization("pose_penalty", &parameterization).ok());
