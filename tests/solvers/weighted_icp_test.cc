@@ -55,6 +55,7 @@ WeightedIcpOptions KdTreeOptions() {
   options.visibility = WeightedIcpOptions::Visibility::kAll;  // all samples are in the target
   options.final_gate = 0.05;  // no outliers: a fixed gate
   options.max_iterations = 100;
+  options.convergence_displacement = 1e-9;  // recovery to 1e-6 is asserted
   return options;
 }
 
