@@ -72,6 +72,7 @@ bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* 
 
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.disable_all_safety_checks = true;  // blocks are built right here
   ceres::Problem problem(problem_options);
 
   double total_weight = 0.0;
