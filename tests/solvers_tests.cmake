@@ -8,4 +8,5 @@ edgefit_add_test(solvers_test
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
 edgefit_add_test(solvers_tube_test SINGLE_PROCESS
   SOURCES solvers/tube_outlier_test.cc
-  LIBS edgefit::solvers edgefit::edges edgefit::scanner edgefit::scene edgefit::model glog::glog)
+  LIBS edgefit::solvers edgefit::edges edgefit::scanner edgefit::scene edgefit::model glog::glog
+       OpenMP::OpenMP_CXX)

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "correspondence/correspondence_test_util.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/surface_sampler.h"
 #include "edgefit/scanner/scanner_placement.h"
@@ -45,11 +46,7 @@ const TubeScene& GetScene() {
   static TubeScene* scene = [] {
     auto* out = new TubeScene;
     Scene scene;
-    SceneMesh floor;
-    floor.mesh_world.vertices = {{-20, -20, 0}, {20, -20, 0}, {20, 20, 0}, {-20, 20, 0}};
-    floor.mesh_world.triangles = {{0, 1, 2}, {0, 2, 3}};
-    floor.kind = "floor";
-    scene.meshes.push_back(floor);
+    scene.meshes.push_back(testing_util::Floor());
     SceneMesh link;
     link.mesh_world.Append(LinkMesh(), kTrueLinkPose);
     link.label = LinkLabel(0);
