@@ -113,29 +113,8 @@ double MaxDisplacement(const std::array<Eigen::Vector3d, 8>& corners_link, const
 
 WeightedIcp::WeightedIcp(const ScanSet* scans, CorrespondenceSearch* search,
                          const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner)
-    : scans_(scans), search_(search), normals_scanner_(normals_scanner) {
+    : scans_(scans), search_(search), normals_scanner_(normals_scanner), visibility_(scans) {
   CHECK(scans_ != nullptr && search_ != nullptr);
-  for (const OrganizedScan& scan : scans_->scans) {
-    T_scanner_world_.push_back(scan.T_world_scanner().inverse());
-    scanner_origins_world_.push_back(scan.T_world_scanner().translation());
-  }
-}
-
-bool WeightedIcp::Sees(size_t s, const Eigen::Vector3d& q_world, const Eigen::Vector3d& n_world,
-                       WeightedIcpOptions::Visibility visibility, double gate) const {
-  const Pose& T_scanner_world = T_scanner_world_[s];
-  if (n_world.dot(scanner_origins_world_[s] - q_world) <= 0.0) return false;  // back face
-  const OrganizedScan& scan = scans_->scans[s];
-  if (visibility == WeightedIcpOptions::Visibility::kFacing || !scan.organized() ||
-      !scan.lattice().valid()) {
-    return true;
-  }
-  const Eigen::Vector3d q_scanner = T_scanner_world * q_world;
-  int row = 0, col = 0;
-  if (!scan.lattice().ProjectToCell(q_scanner, &row, &col)) return false;  // outside the window
-  const size_t cell = scan.Index(row, col);
-  if (!scan.IsValid(cell)) return false;  // the ray through q returned nothing
-  return static_cast<double>(scan.point_scanner(cell).norm()) >= q_scanner.norm() - gate;
 }
 
 void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
@@ -150,11 +129,8 @@ void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_wor
     const Eigen::Vector3d q = R * samples.points[i].cast<double>() + t;
     if (filter) {
       const Eigen::Vector3d n = R * samples.normals[i].cast<double>();
-      bool seen = false;
-      for (size_t s = 0; s < T_scanner_world_.size() && !seen; ++s) {
-        seen = Sees(s, q, n, visibility, gate);
-      }
-      if (!seen) continue;
+      const bool facing_only = visibility == WeightedIcpOptions::Visibility::kFacing;
+      if (visibility_.BestView(q, n, gate, facing_only) != ScanView::kSeen) continue;
     }
     p_used_link_.push_back(samples.points[i]);
     q_world_.push_back(q.cast<float>());

@@ -37,6 +37,7 @@
 #include "edgefit/model/surface_sampler.h"
 #include "edgefit/scan/organized_scan.h"
 #include "solvers/link_motion.h"
+#include "solvers/scan_visibility.h"
 
 namespace edgefit {
 
@@ -178,12 +179,7 @@ class WeightedIcp {
   // occlusion tolerance.
   void SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
                      WeightedIcpOptions::Visibility visibility, double gate);
-  // Whether scan s could see q_world with outward normal n_world.
-  bool Sees(size_t s, const Eigen::Vector3d& q_world, const Eigen::Vector3d& n_world,
-            WeightedIcpOptions::Visibility visibility, double gate) const;
-
-  std::vector<Pose> T_scanner_world_;                // per scan
-  std::vector<Eigen::Vector3d> scanner_origins_world_;  // per scan
+  ScanVisibility visibility_;
   // Buffers reused between iterations and fits.
   std::vector<Eigen::Vector3f> p_used_link_;    // the samples of the iteration
   std::vector<Eigen::Vector3f> q_world_;        // the same, posed

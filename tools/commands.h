@@ -10,6 +10,7 @@ namespace edgefit::tools {
 Command InfoCommand();
 Command ScanCommand();
 Command EdgesCommand();
+Command FitCommand();
 
 }  // namespace edgefit::tools
 

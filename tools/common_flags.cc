@@ -12,3 +12,11 @@ DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (ot
 DEFINE_string(labels, "",
               "Per-cell labels sidecar of a virtual scan (format: include/edgefit/scanner/"
               "label_file.h): written by scan; read by edges to score against the true edges.");
+DEFINE_string(out, "",
+              "Output. scan: the scan, .ptx (all scans in one file) or .pcd (one file per scan: "
+              "F_0.pcd, ...); fit: result.json (base pose, every non-fixed joint, timing_s, "
+              "quality).");
+DEFINE_string(truth, "",
+              "Ground truth JSON of a virtual scan (joints, T_world_base, scanners, settings). "
+              "scan: written; fit: read, to print truth against fit and add \"errors\" to "
+              "result.json.");

@@ -13,5 +13,7 @@ DECLARE_int32(threads);
 DECLARE_uint64(seed);
 DECLARE_double(w_high);
 DECLARE_string(labels);
+DECLARE_string(out);
+DECLARE_string(truth);
 
 #endif  // EDGEFIT_TOOLS_COMMON_FLAGS_H_

@@ -15,6 +15,7 @@ const std::vector<Command>& AllCommands() {
       InfoCommand(),
       ScanCommand(),
       EdgesCommand(),
+      FitCommand(),
   };
   return kCommands;
 }

@@ -44,8 +44,6 @@ DEFINE_double(noise_mm, 1.0, "Gaussian range noise along the laser direction, si
 DEFINE_double(max_range_m, 60.0, "Maximum range [m]; farther rays are misses.");
 DEFINE_bool(full_dome, false, "Scan 360 degrees in azimuth instead of a window around the asset.");
 DEFINE_int32(clutter, 4, "Clutter objects (pillars, boxes, a fence panel) away from the asset.");
-DEFINE_string(out, "", "Output scan: .ptx (all scans in one file) or .pcd (one file per scan: F_0.pcd, ...).");
-DEFINE_string(truth, "", "Output ground truth JSON: joints, T_world_base, scanners, settings.");
 
 namespace edgefit::tools {
 namespace {

@@ -1,0 +1,103 @@
+// Fits an articulated robot (a KinematicModel, end effectors attached) to a
+// scan, paper Sec. 5: edges (Sec. 4), the base link rough (5.1.1, cross-
+// section corners + RANSAC) and precise (5.1.2, edge-weighted ICP), then
+// every independent joint parents first: the rough Eq. (9) sweep over its
+// range (5.2.1; a rotationally symmetric link adds its child's loss) and the
+// precise joint-constrained weighted ICP (5.2.2); end-effector joints the
+// same way (5.3), mimic and loop-closure joints from the fitted ones.
+//
+// A "body" is the link moved by a joint together with every link fixed to
+// it (fixed joints, attached end effectors): they move as one.
+#ifndef EDGEFIT_PIPELINE_ROBOT_FIT_H_
+#define EDGEFIT_PIPELINE_ROBOT_FIT_H_
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/edges/edge_detector.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/scan/organized_scan.h"
+#include "solvers/base_rough.h"
+#include "solvers/joint_sweep.h"
+#include "solvers/weighted_icp.h"
+
+namespace edgefit {
+
+struct RobotFitOptions {
+  EdgeDetectionOptions edges;  // w_high lives here
+  // CAD samples of the precise ICP stages and of the rough sweeps [m].
+  double icp_spacing = 0.004;
+  double sweep_spacing = 0.012;
+  // At most this many samples per body (evenly thinned): a large base at
+  // 4 mm has 250 k, more than the pose needs and slow in Ceres.
+  int max_icp_samples = 30000;
+  int max_sweep_samples = 3000;
+  uint64_t seed = 1;  // sampling and RANSAC
+  BaseRoughOptions base_rough;
+  // Base precise ICP (6-DoF); its first gate covers the rough error.
+  WeightedIcpOptions base_icp = DefaultBaseIcp();
+  JointSweepOptions sweep;
+  // Per-joint precise ICP.
+  WeightedIcpOptions joint_icp = DefaultJointIcp();
+  // --weighting=uniform: w_edge = 1 in every stage.
+  bool uniform_weights = false;
+  // A revolute body is rotationally symmetric about its axis (Sec. 5.2.1)
+  // when this share of its samples lies on rings that are at least 3/4
+  // covered all around.
+  double symmetric_share = 0.9;
+  // Optional base hint: skip the rough base stage and start from this pose.
+  bool has_initial_base = false;
+  Pose T_world_base_initial = Pose::Identity();
+  // Quality: a body fits when at least this share of its visible samples
+  // is within the final gate and their RMS is at most max_rms [m].
+  double min_inlier_share = 0.5;
+  double max_rms = 0.003;
+
+  static WeightedIcpOptions DefaultBaseIcp();
+  static WeightedIcpOptions DefaultJointIcp();
+  bool IsValid(std::string* error) const;
+};
+
+struct BodyQuality {
+  std::string link;          // the moved link (the base: the root)
+  std::string joint;         // the joint that moves it ("" for the base)
+  size_t samples = 0;        // CAD samples
+  size_t visible = 0;        // seen at the fitted pose
+  double inlier_share = 0.0;
+  double rms = 0.0;          // [m]
+  bool symmetric = false;    // the sweep included the child's loss
+  double sweep_value = 0.0;  // rough joint value [rad] or [m]
+  int icp_iterations = 0;
+  bool ok = false;
+};
+
+struct RobotFitTimings {
+  double edges = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0, total = 0.0;  // [s]
+};
+
+struct RobotFitResult {
+  Pose T_world_base = Pose::Identity();  // root link in the world frame
+  std::vector<double> q;                 // every joint, KinematicModel order
+  BaseRoughResult base_rough;
+  std::vector<BodyQuality> bodies;       // base first, then joints in fit order
+  RobotFitTimings timings;
+  bool ok = false;
+  std::string message;  // why not ok
+};
+
+// Progress lines ("base: rough ...") for long steps; may be empty.
+using ProgressFn = std::function<void(const std::string&)>;
+
+// Fails (Status) on invalid options, a model without a base mesh or a scan
+// the stages cannot work on; a fit that runs but does not match the scan
+// returns Ok with result->ok = false and a message.
+Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFitOptions& options,
+                const ProgressFn& progress, RobotFitResult* result);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_PIPELINE_ROBOT_FIT_H_

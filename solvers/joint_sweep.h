@@ -1,0 +1,87 @@
+// The rough 1-DoF search of a link on a joint (paper Sec. 5.2.1 revolute,
+// 6.2.1 prismatic): the link's CAD samples are moved through the joint's
+// whole range at a fixed step, each step scored by the edge-weighted robust
+// loss of Eq. (9) with lattice nearest neighbours, and the best step is
+// refined at finer steps around it (coarse to fine).
+//
+// The score of a joint value q is a sum over every sample, so that all steps
+// are compared on the same points:
+//   seen by a scanner (scan_visibility.h)  Eq. (9) with D = distance to the
+//                                          nearest scan point, capped at
+//                                          max_distance when none is nearer;
+//   hidden behind nearer scan points       occluded_loss (no evidence);
+//   facing no scanner                      occluded_loss.
+// A pose that puts the link where the scanners saw empty space or other
+// surfaces pays the outlier branch of Eq. (9); hidden samples neither help
+// nor hurt.
+#ifndef EDGEFIT_SOLVERS_JOINT_SWEEP_H_
+#define EDGEFIT_SOLVERS_JOINT_SWEEP_H_
+
+#include <string>
+#include <vector>
+
+#include "edgefit/core/status.h"
+#include "edgefit/correspondence/correspondence_search.h"
+#include "edgefit/model/surface_sampler.h"
+#include "solvers/link_motion.h"
+#include "solvers/scan_visibility.h"
+
+namespace edgefit {
+
+struct JointSweepOptions {
+  // Coarse step over the range: 1 degree for revolute joints (1.7 cm at 1 m,
+  // inside the Eq. (9) basin), 5 mm for prismatic ones.
+  double revolute_step = 1.0 * 3.14159265358979323846 / 180.0;  // [rad]
+  double prismatic_step = 0.005;                               // [m]
+  // Refinements: each searches +/- one previous step around the best at a
+  // tenth of it (1 -> 0.1 -> 0.01 degrees by default).
+  int refinements = 2;
+  // Eq. (9) inlier threshold tau_dist [m].
+  double tau_dist = 0.01;
+  // Distances are capped here [m] (the lattice search's gate): a seen sample
+  // without a scan point this close costs max_distance * w.
+  double max_distance = 0.05;
+  // Loss of a hidden sample [m]: the inlier/outlier boundary, so hiding is
+  // neither better than a good match nor as bad as a miss.
+  double occluded_loss = 0.01;
+  // Occlusion tolerance of the visibility test [m].
+  double visibility_tolerance = 0.01;
+  // --weighting=uniform: w_edge = 1 in Eq. (9).
+  bool uniform_weights = false;
+  int lattice_window = 2;  // CorrespondenceOptions::window
+
+  bool IsValid(std::string* error) const;
+};
+
+struct JointSweepSummary {
+  double q = 0.0;          // best joint value [rad] or [m]
+  double loss = 0.0;       // its total Eq. (9) loss [m]
+  double mean_loss = 0.0;  // loss / samples [m]
+  int evaluations = 0;     // joint values scored
+  double seconds = 0.0;
+};
+
+class JointSweep {
+ public:
+  // Borrowed; `search` must use the lattice (organized scans).
+  JointSweep(CorrespondenceSearch* search, const ScanVisibility* visibility);
+
+  // The total loss at joint value q of `samples` (link frame, with normals)
+  // on `motion`.
+  double Loss(const SurfaceSamples& samples, const LinkMotion& motion, double q,
+              const JointSweepOptions& options);
+  // Sweeps motion's range (a continuous joint: one turn) and returns the best
+  // value. Fails on invalid options, a free motion or no samples.
+  Status Sweep(const SurfaceSamples& samples, const LinkMotion& motion,
+               const JointSweepOptions& options, JointSweepSummary* summary);
+
+ private:
+  CorrespondenceSearch* search_;
+  const ScanVisibility* visibility_;
+  std::vector<Eigen::Vector3f> q_world_;
+  std::vector<Correspondence> matches_;
+};
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SOLVERS_JOINT_SWEEP_H_

@@ -1,0 +1,46 @@
+// Bodies of a kinematic tree for the fit (robot_fit.h): a link with every
+// link fixed to it below (fixed joints), which one joint moves as a whole;
+// their CAD samples merged into the body link's frame; and the rotational
+// symmetry test of Sec. 5.2.1. Internal to edgefit::pipeline.
+#ifndef EDGEFIT_PIPELINE_ROBOT_BODIES_H_
+#define EDGEFIT_PIPELINE_ROBOT_BODIES_H_
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/model/surface_sampler.h"
+
+namespace edgefit {
+
+struct Body {
+  int link = -1;                 // the body's frame
+  int joint = -1;                // the joint moving it (-1: the root body)
+  std::vector<int> links;        // link first, then the links fixed below it
+  std::vector<Pose> T_body_link;  // per entry of links
+};
+
+// The body of `link`: it and the links reached from it through fixed joints.
+Body MakeBody(const KinematicModel& model, int link, int joint);
+
+// Samples of the body's links (samples indexed like model.links()) in the
+// body frame; T_body_extra places extra samples (another body's, posed).
+void AppendBodySamples(const Body& body, const std::vector<SurfaceSamples>& link_samples,
+                       const Pose& T_body_frame, SurfaceSamples* out);
+
+// Keeps at most max_samples of *samples, every k-th (the sampler's order is
+// stratified by area, so a stride keeps the density even).
+void ThinSamples(int max_samples, SurfaceSamples* samples);
+
+// Sec. 5.2.1: whether the samples (body frame) are rotationally symmetric
+// about the axis through the origin along axis_body: binned by radius and
+// height (5 mm), a ring counts as round when 9 of its 12 30-degree sectors
+// hold samples; symmetric when at least min_share of the samples lie on
+// round rings.
+bool IsRotationallySymmetric(const SurfaceSamples& samples, const Eigen::Vector3d& axis_body,
+                             double min_share);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_PIPELINE_ROBOT_BODIES_H_

@@ -1,0 +1,305 @@
+// edgefit fit: fits the kinematic model to the scan (paper Sec. 5) and
+// writes result.json (DESIGN.md contract); optional outputs for the user.
+//   edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json
+//               [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]
+//               [--init=x,y,yaw_deg] [--truth=T.json] [--out_joint_states=J.yaml]
+//               [--out_urdf=U.urdf] [--threads=N] [--seed=N]
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "command_line.h"
+#include "commands.h"
+#include "common_flags.h"
+#include "edgefit/core/atomic_file.h"
+#include "edgefit/io/scan_io.h"
+#include "edgefit/model/composition.h"
+#include "edgefit/pipeline/fit_errors.h"
+#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/scanner/truth.h"
+
+DEFINE_string(kind, "auto", "auto | articulated | conveyance (conveyance: not yet, issue 7).");
+DEFINE_string(weighting, "edge", "edge: Eq. (6) weights in every stage; uniform: all 1.");
+DEFINE_string(loss, "trivial",
+              "Loss of the precise ICP residuals: trivial, huber, cauchy, soft_l1, arctan, tukey.");
+DEFINE_double(loss_scale_mm, 5.0, "Scale of --loss [mm].");
+DEFINE_double(lambda, 1.0, "Eq. (10)/(14) penalty weight relative to the data (pose_penalty only).");
+DEFINE_string(parameterization, "joint_space",
+              "Joint constraint of the precise ICP: joint_space (1 parameter) or pose_penalty "
+              "(the paper's 6-DoF pose + Eq. (10) penalties, then projection).");
+DEFINE_string(init, "", "Optional base hint x,y,yaw_deg (metres, degrees): skips the rough base "
+                        "stage. Never required.");
+DEFINE_string(out_joint_states, "", "Optional output: joint values as YAML, ROS joint_states "
+                                    "layout (name, position).");
+DEFINE_string(out_urdf, "", "Optional output: the model with a world link and a fixed joint at "
+                            "the fitted base pose (joint values in a comment).");
+
+namespace edgefit::tools {
+namespace {
+
+using nlohmann::json;
+
+json MatrixJson(const Pose& T) {
+  json rows = json::array();
+  for (int r = 0; r < 4; ++r) {
+    json row = json::array();
+    for (int c = 0; c < 4; ++c) row.push_back(T.matrix()(r, c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+Status ParseInit(const std::string& text, Pose* T) {
+  std::vector<std::string> parts = SplitList(text);
+  double v[3];
+  if (parts.size() != 3) return Status::Error("--init: expected x,y,yaw_deg, got '" + text + "'");
+  for (int i = 0; i < 3; ++i) {
+    char* end = nullptr;
+    v[i] = std::strtod(parts[static_cast<size_t>(i)].c_str(), &end);
+    if (end == parts[static_cast<size_t>(i)].c_str() || *end != '\0' || !std::isfinite(v[i])) {
+      return Status::Error("--init: '" + parts[static_cast<size_t>(i)] + "' is not a number");
+    }
+  }
+  *T = Pose::Identity();
+  T->linear() = Eigen::AngleAxisd(v[2] * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  T->translation() = Eigen::Vector3d(v[0], v[1], 0.0);
+  return Status::Ok();
+}
+
+Status OptionsFromFlags(RobotFitOptions* options) {
+  options->edges.w_high = FLAGS_w_high;
+  options->seed = FLAGS_seed;
+  if (FLAGS_weighting != "edge" && FLAGS_weighting != "uniform") {
+    return Status::Error("--weighting must be edge or uniform, not '" + FLAGS_weighting + "'");
+  }
+  options->uniform_weights = FLAGS_weighting == "uniform";
+  for (WeightedIcpOptions* icp : {&options->base_icp, &options->joint_icp}) {
+    icp->loss = FLAGS_loss;
+    icp->loss_scale = FLAGS_loss_scale_mm * 1e-3;
+    icp->lambda = FLAGS_lambda;
+  }
+  EDGEFIT_RETURN_IF_ERROR(
+      ParseJointParameterization(FLAGS_parameterization, &options->joint_icp.parameterization));
+  if (!FLAGS_init.empty()) {
+    options->has_initial_base = true;
+    EDGEFIT_RETURN_IF_ERROR(ParseInit(FLAGS_init, &options->T_world_base_initial));
+  }
+  std::string error;
+  if (!options->IsValid(&error)) return Status::Error(error);
+  return Status::Ok();
+}
+
+std::string JointStatesYaml(const KinematicModel& model, const std::vector<double>& q) {
+  std::ostringstream names, positions;
+  bool first = true;
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    if (!model.joints()[j].IsMoving()) continue;
+    names << (first ? "" : ", ") << model.joints()[j].name;
+    char value[32];
+    std::snprintf(value, sizeof(value), "%.9g", q[j]);
+    positions << (first ? "" : ", ") << value;
+    first = false;
+  }
+  return "# edgefit fit: sensor_msgs/JointState (radians, metres)\nname: [" + names.str() +
+         "]\nposition: [" + positions.str() + "]\nvelocity: []\neffort: []\n";
+}
+
+// The model's URDF text with a world link and a fixed joint at the base pose.
+Status CalibratedUrdf(const std::string& urdf_path, const KinematicModel& model,
+                      const RobotFitResult& fit, std::string* out) {
+  std::string text;
+  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(urdf_path, &text));
+  const size_t robot = text.find("<robot");
+  const size_t open_end = robot == std::string::npos ? robot : text.find('>', robot);
+  if (open_end == std::string::npos) return Status::Error(urdf_path + ": no <robot> element");
+  const Eigen::Vector3d t = fit.T_world_base.translation();
+  const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
+  char joint[512];
+  std::snprintf(joint, sizeof(joint),
+                "\n  <!-- edgefit fit: base pose in the scan's world frame -->\n"
+                "  <link name=\"world\"/>\n"
+                "  <joint name=\"world_to_%s\" type=\"fixed\">\n"
+                "    <parent link=\"world\"/>\n    <child link=\"%s\"/>\n"
+                "    <origin xyz=\"%.9g %.9g %.9g\" rpy=\"%.9g %.9g %.9g\"/>\n  </joint>",
+                model.links()[static_cast<size_t>(model.root_link())].name.c_str(),
+                model.links()[static_cast<size_t>(model.root_link())].name.c_str(), t.x(), t.y(),
+                t.z(), rpy.x(), rpy.y(), rpy.z());
+  std::string values = "\n  <!-- fitted joint values:";
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    if (!model.joints()[j].IsMoving()) continue;
+    char v[128];
+    std::snprintf(v, sizeof(v), " %s=%.9g", model.joints()[j].name.c_str(), fit.q[j]);
+    values += v;
+  }
+  values += " -->";
+  *out = text.substr(0, open_end + 1) + values + joint + text.substr(open_end + 1);
+  return Status::Ok();
+}
+
+int RunFit(const Command& command) {
+  if (FLAGS_urdf.empty()) return BadInput(command, "--urdf is required");
+  if (FLAGS_scan.empty()) return BadInput(command, "--scan is required");
+  if (FLAGS_out.empty()) return BadInput(command, "--out is required");
+  if (FLAGS_kind == "conveyance") {
+    return BadInput(command, "--kind=conveyance is not implemented yet (issue 7)");
+  }
+  if (FLAGS_kind != "auto" && FLAGS_kind != "articulated") {
+    return BadInput(command, "--kind must be auto, articulated or conveyance");
+  }
+  RobotFitOptions options;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFromFlags(&options));
+  if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
+  const auto start = std::chrono::steady_clock::now();
+
+  std::vector<AttachSpec> specs;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseAttachSpecList(FLAGS_attach, &specs));
+  KinematicModel model;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                               LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
+  bool prismatic_only = true;
+  for (const Joint& j : model.joints()) {
+    if (j.IsIndependent() && j.type != JointType::kPrismatic) prismatic_only = false;
+  }
+  if (FLAGS_kind == "auto" && prismatic_only) {
+    return BadInput(command, FLAGS_urdf + ": a conveyance system (prismatic joints only); "
+                             "its pipeline is not implemented yet (issue 7)");
+  }
+  ScanSet scans;
+  for (const std::string& path : SplitList(FLAGS_scan)) {
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
+  }
+  Truth truth;
+  if (!FLAGS_truth.empty()) EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadTruthJson(FLAGS_truth, &truth));
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  RobotFitResult fit;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitRobot(model, scans, options, &Progress, &fit));
+  FitErrors errors;
+  if (!FLAGS_truth.empty()) {
+    const Status status = CompareWithTruth(model, fit.q, fit.T_world_base, truth.joints,
+                                           truth.T_world_base, &errors);
+    if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
+  }
+
+  // result.json
+  const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
+  const Eigen::Vector3d xyz = fit.T_world_base.translation();
+  json joints = json::object();
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    if (model.joints()[j].IsMoving()) joints[model.joints()[j].name] = fit.q[j];
+  }
+  json per_link = json::object();
+  for (const BodyQuality& b : fit.bodies) {
+    per_link[b.link] = {{"joint", b.joint},          {"samples", b.samples},
+                        {"visible", b.visible},      {"inlier_share", b.inlier_share},
+                        {"rms_m", b.rms},            {"symmetric", b.symmetric},
+                        {"icp_iterations", b.icp_iterations}, {"ok", b.ok}};
+    if (!b.joint.empty()) per_link[b.link]["sweep_value"] = b.sweep_value;
+  }
+  json result = {
+      {"kind", "articulated"},
+      {"base", {{"xyz", {xyz.x(), xyz.y(), xyz.z()}}, {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
+                {"T_world_base", MatrixJson(fit.T_world_base)}}},
+      {"joints", joints},
+      {"timing_s", {{"load", load_seconds}, {"edges", fit.timings.edges},
+                    {"base_rough", fit.timings.base_rough}, {"base_precise", fit.timings.base_precise},
+                    {"chain", fit.timings.chain}, {"total", 0.0}}},
+      {"quality", {{"per_link", per_link}, {"ok", fit.ok}, {"message", fit.message},
+                   {"base_rough", {{"floor_z", fit.base_rough.floor_z},
+                                   {"scan_corners", fit.base_rough.scan_corners},
+                                   {"model_corners", fit.base_rough.model_corners},
+                                   {"hypotheses", fit.base_rough.hypotheses},
+                                   {"inlier_share", fit.base_rough.inlier_share}}}}},
+      {"options", {{"weighting", FLAGS_weighting}, {"w_high", FLAGS_w_high}, {"loss", FLAGS_loss},
+                   {"lambda", FLAGS_lambda}, {"parameterization", FLAGS_parameterization},
+                   {"seed", FLAGS_seed}}},
+      {"threads", omp_get_max_threads()}};
+  if (!FLAGS_truth.empty()) {
+    json e = json::object();
+    for (const JointError& j : errors.joints) e[j.name] = j.error;
+    result["errors"] = {{"joints", e},
+                        {"base_translation_m", errors.base_translation},
+                        {"base_rotation_rad", errors.base_rotation}};
+  }
+
+  // Outputs: each atomic; a later failure removes the earlier ones.
+  std::vector<std::string> written;
+  auto fail = [&](const Status& status) {
+    for (const std::string& path : written) std::remove(path.c_str());
+    return BadInput(command, status);
+  };
+  if (!FLAGS_out_joint_states.empty()) {
+    const Status status = WriteStringAtomically(FLAGS_out_joint_states, JointStatesYaml(model, fit.q));
+    if (!status.ok()) return fail(status);
+    written.push_back(FLAGS_out_joint_states);
+  }
+  if (!FLAGS_out_urdf.empty()) {
+    std::string urdf;
+    Status status = CalibratedUrdf(FLAGS_urdf, model, fit, &urdf);
+    if (status.ok()) status = WriteStringAtomically(FLAGS_out_urdf, urdf);
+    if (!status.ok()) return fail(status);
+    written.push_back(FLAGS_out_urdf);
+  }
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result["timing_s"]["total"] = total;
+  const Status status = WriteStringAtomically(FLAGS_out, result.dump(2) + "\n");
+  if (!status.ok()) return fail(status);
+
+  // Report on stdout.
+  std::printf("base: xyz %.4f %.4f %.4f m, rpy %.3f %.3f %.3f deg\n", xyz.x(), xyz.y(), xyz.z(),
+              rpy.x() * 180.0 / M_PI, rpy.y() * 180.0 / M_PI, rpy.z() * 180.0 / M_PI);
+  if (FLAGS_truth.empty()) {
+    for (size_t j = 0; j < model.joints().size(); ++j) {
+      const Joint& joint = model.joints()[j];
+      if (!joint.IsMoving()) continue;
+      if (joint.type == JointType::kPrismatic) {
+        std::printf("  %-24s %+10.3f mm\n", joint.name.c_str(), fit.q[j] * 1e3);
+      } else {
+        std::printf("  %-24s %+10.4f deg\n", joint.name.c_str(), fit.q[j] * 180.0 / M_PI);
+      }
+    }
+  } else {
+    std::printf("base error: %.3f mm, %.4f deg\n", errors.base_translation * 1e3,
+                errors.base_rotation * 180.0 / M_PI);
+    std::printf("  %-24s %12s %12s %10s\n", "joint", "truth", "fit", "error");
+    for (const JointError& j : errors.joints) {
+      const double scale = j.prismatic ? 1e3 : 180.0 / M_PI;
+      std::printf("  %-24s %12.4f %12.4f %10.4f %s%s\n", j.name.c_str(), j.truth * scale,
+                  j.fit * scale, j.error * scale, j.prismatic ? "mm" : "deg",
+                  j.independent ? "" : " (dependent)");
+    }
+  }
+  std::printf("quality: %s%s%s\n", fit.ok ? "ok" : "NOT OK", fit.ok ? "" : ": ", fit.message.c_str());
+  std::printf("time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
+              "total %.2f s (load %.2f s)\n",
+              fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise,
+              fit.timings.chain, total, load_seconds);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command FitCommand() {
+  return {"fit",
+          "fit the kinematic model to the scan: base pose and every joint (paper Sec. 5)",
+          "Usage:\n"
+          "  edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json\n"
+          "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
+          "              [--parameterization=joint_space|pose_penalty] [--init=x,y,yaw_deg]\n"
+          "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
+          "              [--threads=N] [--seed=N]\n"
+          "Example:\n"
+          "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
+          "    --scan=robot.ptx --truth=robot_truth.json --out=result.json",
+          {"urdf", "attach", "scan", "out", "kind", "weighting", "w_high", "loss", "loss_scale_mm",
+           "lambda", "parameterization", "init", "truth", "out_joint_states", "out_urdf",
+           "threads", "seed"},
+          &RunFit};
+}
+
+}  // namespace edgefit::tools
