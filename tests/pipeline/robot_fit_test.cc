@@ -1,0 +1,158 @@
+// The robot pipeline end to end (paper Sec. 5) on a small virtual scan: the
+// bundled robot with its weld gun and accessories (harnesses, clamps), a
+// floor and clutter, 3 scanners, 4 mm spacing (about 1.9 M points), 1 mm
+// noise. Fails if accuracy regresses (issue bar on the full 1.7 mm scenes:
+// BENCHMARK.md), if the fit depends on the thread count, or if a scan
+// without the robot gets a confident answer.
+#include <glog/logging.h>
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "edgefit/model/composition.h"
+#include "edgefit/model/joint_values.h"
+#include "edgefit/pipeline/fit_errors.h"
+#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/scanner/scanner_placement.h"
+#include "edgefit/scanner/truth.h"
+#include "edgefit/scanner/virtual_scanner.h"
+#include "edgefit/scene/accessories.h"
+#include "edgefit/scene/environment.h"
+#include "edgefit/scene/model_scene.h"
+
+namespace edgefit {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct RobotScene {
+  KinematicModel model;
+  std::vector<double> q;
+  Pose T_world_base = Pose::Identity();
+  ScanSet scans;        // robot, gun, accessories, floor, clutter
+  ScanSet empty_scans;  // the same place without the robot and its accessories
+};
+
+const RobotScene& GetScene() {
+  static RobotScene* scene = [] {
+    auto* out = new RobotScene;
+    const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
+    AttachSpec gun;
+    CHECK(ParseAttachSpec(dir + "weld_gun.urdf@tool0", &gun).ok());
+    CHECK(LoadModelWithAttachments(dir + "robot.urdf", {gun}, ModelLoadOptions(), &out->model).ok());
+    out->q = out->model.ZeroJoints();
+    CHECK(ParseJointAssignments("joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,"
+                                "joint_6=0.6,gun_joint=0.09",
+                                out->model, &out->q)
+              .ok());
+    CHECK(out->model.ResolveDependentJoints(&out->q).ok());
+    out->T_world_base = PoseFromXyzRpy({0.5, -0.2, 0.0}, {0.0, 0.0, 15.0 * kDeg});
+    const std::vector<Pose> T_world_link = out->model.ForwardKinematics(out->q, out->T_world_base);
+    const Eigen::AlignedBox3d box = out->model.BoundingBox(out->q, out->T_world_base);
+    ScannerPlacementOptions placement;
+    placement.seed = 5;
+    const std::vector<Pose> scanners = PlaceScanners(box, placement);
+    VirtualScanOptions options;
+    options.spacing = 0.004;
+    options.seed = 11;
+    for (const bool with_robot : {true, false}) {
+      Scene scene;
+      if (with_robot) {
+        AddModelToScene(out->model, T_world_link, &scene);
+        AccessoryOptions accessories;
+        accessories.seed = 2;
+        AddAccessories(out->model, out->q, T_world_link, accessories, &scene);
+      }
+      EnvironmentOptions environment;
+      environment.seed = 3;
+      AddEnvironment(box, environment, &scene);
+      options.asset_box_world = box;
+      VirtualScan scan;
+      CHECK(ScanScene(scene, scanners, options, &scan).ok());
+      (with_robot ? out->scans : out->empty_scans) = std::move(scan.scans);
+    }
+    return out;
+  }();
+  return *scene;
+}
+
+FitErrors Fit(const ScanSet& scans, bool uniform, RobotFitResult* fit) {
+  const RobotScene& s = GetScene();
+  RobotFitOptions options;
+  options.uniform_weights = uniform;
+  const Status status = FitRobot(s.model, scans, options, nullptr, fit);
+  EXPECT_TRUE(status.ok()) << status.message();
+  FitErrors errors;
+  CHECK(CompareWithTruth(s.model, fit->q, fit->T_world_base,
+                         NamedJointValues(s.model, s.q), s.T_world_base, &errors)
+            .ok());
+  return errors;
+}
+
+TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
+  const RobotScene& s = GetScene();
+  RobotFitResult fit;
+  const FitErrors errors = Fit(s.scans, false, &fit);
+  std::printf("  %zu points; base %.3f mm %.4f deg; %.2f s\n", s.scans.TotalValid(),
+              errors.base_translation * 1e3, errors.base_rotation / kDeg, fit.timings.total);
+  double sum = 0.0, max = 0.0;
+  int revolute = 0;
+  for (const JointError& e : errors.joints) {
+    std::printf("  %-24s error %.4f %s\n", e.name.c_str(), e.prismatic ? e.error * 1e3 : e.error / kDeg,
+                e.prismatic ? "mm" : "deg");
+    if (e.prismatic) {  // the gun's electrode: a thin rod along its own axis
+      EXPECT_LT(e.error, 0.005) << e.name;
+      continue;
+    }
+    sum += e.error;
+    max = std::max(max, e.error);
+    ++revolute;
+  }
+  // Every body of the robot matches the scan (the electrode, 2.7 mm off at
+  // this spacing, is flagged, rightly).
+  for (const BodyQuality& b : fit.bodies) {
+    if (b.link != "gun_electrode") {
+      EXPECT_TRUE(b.ok) << b.link;
+    }
+  }
+  // Measured at 4 mm spacing: base 0.11 mm, 0.024 deg; joints mean 0.090,
+  // max 0.25 deg (joint_5); gun 2.7 mm. The issue's bar (0.05 / 0.15 deg)
+  // is for the 1.7 mm scans of BENCHMARK.md.
+  EXPECT_LT(errors.base_translation, 0.001);
+  EXPECT_LT(errors.base_rotation, 0.05 * kDeg);
+  EXPECT_LT(sum / revolute, 0.15 * kDeg);
+  EXPECT_LT(max, 0.4 * kDeg);
+}
+
+TEST(RobotFitTest, SameResultForAnyThreadCount) {
+  const RobotScene& s = GetScene();
+  RobotFitResult one, two;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  Fit(s.scans, false, &one);
+  omp_set_num_threads(2);
+  Fit(s.scans, false, &two);
+  omp_set_num_threads(threads);
+  EXPECT_TRUE(one.T_world_base.matrix() == two.T_world_base.matrix());
+  EXPECT_EQ(one.q, two.q);
+}
+
+// The issue's wrong input: a scan of the place without the robot must not
+// give a confident answer.
+TEST(RobotFitTest, ScanWithoutTheRobotIsNotOk) {
+  const RobotScene& s = GetScene();
+  RobotFitResult fit;
+  RobotFitOptions options;
+  const Status status = FitRobot(s.model, s.empty_scans, options, nullptr, &fit);
+  ASSERT_TRUE(status.ok()) << status.message();
+  std::printf("  message: %s\n", fit.message.c_str());
+  EXPECT_FALSE(fit.ok);
+  EXPECT_FALSE(fit.message.empty());
+}
+
+}  // namespace
+}  // namespace edgefit

@@ -1,0 +1,6 @@
+# The end-to-end robot fit (paper Sec. 5) on a small virtual scan: accuracy
+# against the ground truth, thread-count determinism, a scan without the robot.
+edgefit_add_test(pipeline_test SINGLE_PROCESS
+  SOURCES pipeline/robot_fit_test.cc
+  LIBS edgefit::pipeline edgefit::scanner edgefit::scene edgefit::model glog::glog
+       OpenMP::OpenMP_CXX)
