@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds edgefit (Release) and runs it on the bundled
-# data. Until the fit exists (issue 6), the main job is the virtual scanner:
-# the bundled spot-welding robot with its weld gun and non-modelled accessories
-# is scanned from 3 scanners, the scan is read back with its lattice, and its
-# edges are detected and scored against the scanner's ground truth.
+# Installs what is missing, builds edgefit (Release) and runs the main job on
+# the bundled data: the bundled spot-welding robot with its weld gun and
+# non-modelled accessories is scanned from 3 scanners (virtual scanner), its
+# edges are detected and scored against the scanner's ground truth, and the
+# robot is fitted to the scan (base pose and every joint), truth against fit.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -39,3 +39,10 @@ echo "== edgefit edges: paper Sec. 4 on the scan lattice, scored against the tru
   --out_weights="$out/robot_weights.bin" --out_json="$out/robot_edges.json" \
   --out_ply="$out/robot_edges.ply"
 echo "(open $out/robot_edges.ply in CloudCompare or MeshLab: red = w_high)"
+echo
+echo "== edgefit fit: base (cross-section corners + RANSAC, weighted ICP), then every joint"
+echo "   (Eq. 9 sweep + joint-constrained weighted ICP); truth against fit"
+"$edgefit" fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \
+  --scan="$out/robot.ptx" --truth="$out/robot_truth.json" --out="$out/result.json" \
+  --out_joint_states="$out/joint_states.yaml" --out_urdf="$out/robot_fitted.urdf"
+echo "(result: $out/result.json; joint states: $out/joint_states.yaml; calibrated URDF: $out/robot_fitted.urdf)"

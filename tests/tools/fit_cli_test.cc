@@ -1,0 +1,68 @@
+// edgefit fit through the command line: the result.json contract of
+// DESIGN.md, the optional outputs, truth comparison, bad input.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tools/cli_fixture.h"
+
+namespace {
+
+using edgefit_cli_test::CliTest;
+using edgefit_cli_test::RunResult;
+using edgefit_cli_test::Slurp;
+namespace fs = std::filesystem;
+
+const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
+
+TEST_F(CliTest, FitWritesTheResultContract) {
+  const std::string scan = Path("arm.ptx"), truth = Path("truth.json");
+  ASSERT_EQ(Run("scan --urdf=" + kModel + " --accessories --scanners=2 --out=" + scan +
+                " --truth=" + truth)
+                .exit_code,
+            0);
+  const RunResult r = Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
+                          " --out=" + Path("result.json") + " --out_joint_states=" +
+                          Path("j.yaml") + " --out_urdf=" + Path("fitted.urdf"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
+  EXPECT_EQ(result["kind"], "articulated");
+  EXPECT_EQ(result["base"]["xyz"].size(), 3u);
+  EXPECT_EQ(result["base"]["rpy"].size(), 3u);
+  EXPECT_EQ(result["base"]["T_world_base"].size(), 4u);
+  // Every non-fixed joint, dependent ones included.
+  for (const char* joint : {"joint_1", "joint_2", "cylinder_joint", "piston_joint", "rod_joint"}) {
+    EXPECT_TRUE(result["joints"].contains(joint)) << joint;
+  }
+  for (const char* stage : {"load", "edges", "base_rough", "base_precise", "chain", "total"}) {
+    EXPECT_TRUE(result["timing_s"].contains(stage)) << stage;
+  }
+  EXPECT_TRUE(result["quality"]["ok"].get<bool>()) << result["quality"].dump();
+  EXPECT_TRUE(result["quality"]["per_link"].contains("link_2"));
+  // The arm scanned at its zero posture: joints within 0.1 degrees.
+  EXPECT_LT(result["errors"]["joints"]["joint_1"].get<double>(), 0.1 * M_PI / 180.0);
+  EXPECT_LT(result["errors"]["joints"]["joint_2"].get<double>(), 0.1 * M_PI / 180.0);
+  EXPECT_LT(result["errors"]["base_translation_m"].get<double>(), 0.001);
+  EXPECT_NE(Slurp(Path("j.yaml")).find("name: [joint_1, joint_2"), std::string::npos);
+  const std::string urdf = Slurp(Path("fitted.urdf"));
+  EXPECT_NE(urdf.find("<link name=\"world\"/>"), std::string::npos);
+  EXPECT_NE(urdf.find("world_to_base_link"), std::string::npos);
+}
+
+TEST_F(CliTest, FitBadInput) {
+  const std::string sample = std::string(EDGEFIT_SOURCE_DIR) + "/assets/samples/two_scans.ptx";
+  const std::string conveyor = std::string(EDGEFIT_SOURCE_DIR) + "/assets/conveyor/conveyor.urdf";
+  const std::string out = " --out=" + Path("result.json");
+  ExpectBadInput("fit --scan=" + sample + out, "--urdf is required");
+  ExpectBadInput("fit --urdf=" + kModel + out, "--scan is required");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample, "--out is required");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + Path("none.ptx") + out, "none.ptx");
+  ExpectBadInput("fit --urdf=" + Path("none.urdf") + " --scan=" + sample + out, "none.urdf");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --weighting=heavy",
+                 "--weighting");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --init=1,2", "--init");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --loss=l3", "l3");
+  ExpectBadInput("fit --urdf=" + conveyor + " --scan=" + sample + out, "conveyance");
+  EXPECT_FALSE(fs::exists(Path("result.json")));
+}
+
+}  // namespace
