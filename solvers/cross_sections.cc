@@ -34,7 +34,9 @@ class PointGrid2 {
 
  private:
   int64_t Coord(double v) const { return static_cast<int64_t>(std::floor(v / cell_)); }
-  static int64_t Pack(int64_t x, int64_t y) { return (x << 32) ^ (y & 0xffffffffLL); }
+  static int64_t Pack(int64_t x, int64_t y) {  // unsigned shift: no UB for negative x
+    return static_cast<int64_t>((static_cast<uint64_t>(x) << 32) ^ (static_cast<uint64_t>(y) & 0xffffffffULL));
+  }
   int64_t Key(const Eigen::Vector2d& p) const { return Pack(Coord(p.x()), Coord(p.y())); }
   const std::vector<Eigen::Vector2d>& points_;
   double cell_;
