@@ -6,9 +6,9 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <unordered_map>
 
 #include "edgefit/core/split_mix64.h"
+#include "solvers/point_grid2.h"
 
 namespace edgefit {
 
@@ -35,8 +35,7 @@ Status EstimateFloorHeight(const ScanSet& scans,
                            const Eigen::AlignedBox3d& roi_world, double normal_cos,
                            double* floor_z) {
   constexpr double kBin = 0.005;  // [m]
-  std::map<int64_t, size_t> histogram;
-  std::vector<double> heights;
+  std::map<int64_t, std::pair<size_t, double>> histogram;  // bin -> (count, sum of z)
   for (size_t s = 0; s < scans.scans.size(); ++s) {
     const OrganizedScan& scan = scans.scans[s];
     if (s >= normals_scanner.size() || normals_scanner[s].size() != scan.size()) continue;
@@ -47,67 +46,34 @@ Status EstimateFloorHeight(const ScanSet& scans,
       if (std::abs((R.row(2) * n.cast<double>())(0)) < normal_cos) continue;
       const Eigen::Vector3d p = scan.PointWorld(i);
       if (!roi_world.isEmpty() && !roi_world.contains(p)) continue;
-      ++histogram[static_cast<int64_t>(std::floor(p.z() / kBin))];
-      heights.push_back(p.z());
+      auto& bin = histogram[static_cast<int64_t>(std::floor(p.z() / kBin))];
+      ++bin.first;
+      bin.second += p.z();
     }
   }
   if (histogram.empty()) return Status::Error("no horizontal surface (floor) in the scan");
   int64_t best_bin = 0;
   size_t best_count = 0;
-  for (const auto& [bin, count] : histogram) {
-    if (count > best_count) {
-      best_count = count;
+  for (const auto& [bin, count_sum] : histogram) {
+    if (count_sum.first > best_count) {
+      best_count = count_sum.first;
       best_bin = bin;
     }
   }
-  const double centre = (static_cast<double>(best_bin) + 0.5) * kBin;
+  // The mean over the peak bin and its neighbours (the noise spreads the floor).
   double sum = 0.0;
   size_t count = 0;
-  for (const double z : heights) {
-    if (std::abs(z - centre) <= 2.0 * kBin) {
-      sum += z;
-      ++count;
-    }
+  for (int64_t bin = best_bin - 2; bin <= best_bin + 2; ++bin) {
+    const auto it = histogram.find(bin);
+    if (it == histogram.end()) continue;
+    count += it->second.first;
+    sum += it->second.second;
   }
   *floor_z = sum / static_cast<double>(count);
   return Status::Ok();
 }
 
 namespace {
-
-// Occupancy of scan section points on a grid of cell = inlier distance;
-// Near(p) is true when a point lies within the distance.
-class Occupancy2 {
- public:
-  Occupancy2(const std::vector<Eigen::Vector2d>& points, double distance)
-      : points_(points), cell_(distance), distance2_(distance * distance) {
-    for (size_t i = 0; i < points.size(); ++i) {
-      cells_[Pack(Coord(points[i].x()), Coord(points[i].y()))].push_back(static_cast<int>(i));
-    }
-  }
-  bool Near(const Eigen::Vector2d& p) const {
-    const int64_t cx = Coord(p.x()), cy = Coord(p.y());
-    for (int64_t dx = -1; dx <= 1; ++dx) {
-      for (int64_t dy = -1; dy <= 1; ++dy) {
-        const auto it = cells_.find(Pack(cx + dx, cy + dy));
-        if (it == cells_.end()) continue;
-        for (const int j : it->second) {
-          if ((points_[static_cast<size_t>(j)] - p).squaredNorm() <= distance2_) return true;
-        }
-      }
-    }
-    return false;
-  }
-
- private:
-  int64_t Coord(double v) const { return static_cast<int64_t>(std::floor(v / cell_)); }
-  static int64_t Pack(int64_t x, int64_t y) {  // unsigned shift: no UB for negative x
-    return static_cast<int64_t>((static_cast<uint64_t>(x) << 32) ^ (static_cast<uint64_t>(y) & 0xffffffffULL));
-  }
-  const std::vector<Eigen::Vector2d>& points_;
-  double cell_, distance2_;
-  std::unordered_map<int64_t, std::vector<int>> cells_;
-};
 
 struct ModelPair {
   int a = 0, b = 0;  // indices into the section's corner list
@@ -198,7 +164,7 @@ Status FitBaseRough(const ScanSet& scans,
   // scan occupancy grids.
   std::vector<std::vector<Eigen::Vector2d>> score_points(H);
   size_t score_total = 0;
-  std::vector<Occupancy2> occupancy;
+  std::vector<PointGrid2> occupancy;  // scan section points, per height
   occupancy.reserve(H);
   for (size_t k = 0; k < H; ++k) {
     const std::vector<Eigen::Vector2d>& mp = model_sections[k].points;
@@ -211,7 +177,9 @@ Status FitBaseRough(const ScanSet& scans,
   auto score = [&](const Eigen::Isometry2d& T) {
     size_t inliers = 0;
     for (size_t k = 0; k < H; ++k) {
-      for (const Eigen::Vector2d& p : score_points[k]) inliers += occupancy[k].Near(T * p);
+      for (const Eigen::Vector2d& p : score_points[k]) {
+        inliers += occupancy[k].AnyWithin(T * p, options.inlier_distance);
+      }
     }
     return inliers;
   };

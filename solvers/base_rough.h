@@ -8,7 +8,8 @@
 // initialisation; an optional box limits the scan to a region.
 //
 // The floor: the most populated 5 mm height bin of the scan points with a
-// vertical normal (edge-stage normals), refined to their mean.
+// vertical normal (edge-stage normals), refined to the mean height of the
+// points in it and the two bins on either side.
 #ifndef EDGEFIT_SOLVERS_BASE_ROUGH_H_
 #define EDGEFIT_SOLVERS_BASE_ROUGH_H_
 

@@ -5,45 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <unordered_map>
+
+#include "solvers/point_grid2.h"
 
 namespace edgefit {
-namespace {
-
-// A hash grid over 2D points with cell size = the query radius.
-class PointGrid2 {
- public:
-  PointGrid2(const std::vector<Eigen::Vector2d>& points, double cell)
-      : points_(points), cell_(cell) {
-    for (size_t i = 0; i < points.size(); ++i) cells_[Key(points[i])].push_back(static_cast<int>(i));
-  }
-  template <typename F>
-  void ForNeighbors(const Eigen::Vector2d& p, double radius, F&& f) const {
-    const int64_t cx = Coord(p.x()), cy = Coord(p.y());
-    const int reach = static_cast<int>(std::ceil(radius / cell_));
-    for (int64_t dx = -reach; dx <= reach; ++dx) {
-      for (int64_t dy = -reach; dy <= reach; ++dy) {
-        const auto it = cells_.find(Pack(cx + dx, cy + dy));
-        if (it == cells_.end()) continue;
-        for (const int j : it->second) {
-          if ((points_[static_cast<size_t>(j)] - p).squaredNorm() <= radius * radius) f(j);
-        }
-      }
-    }
-  }
-
- private:
-  int64_t Coord(double v) const { return static_cast<int64_t>(std::floor(v / cell_)); }
-  static int64_t Pack(int64_t x, int64_t y) {  // unsigned shift: no UB for negative x
-    return static_cast<int64_t>((static_cast<uint64_t>(x) << 32) ^ (static_cast<uint64_t>(y) & 0xffffffffULL));
-  }
-  int64_t Key(const Eigen::Vector2d& p) const { return Pack(Coord(p.x()), Coord(p.y())); }
-  const std::vector<Eigen::Vector2d>& points_;
-  double cell_;
-  std::unordered_map<int64_t, std::vector<int>> cells_;
-};
-
-}  // namespace
 
 std::vector<Section> ScanSections(const ScanSet& scans, const std::vector<double>& heights,
                                   double max_edge, const Eigen::AlignedBox3d& crop_world) {
@@ -133,6 +98,7 @@ std::vector<int> SectionCorners(const Section& section, const CornerOptions& opt
       sum += q;
       sum2 += q * q.transpose();
       ++count;
+      return false;
     });
     if (count < options.min_neighbors) continue;
     const Eigen::Vector2d mean = sum / count;

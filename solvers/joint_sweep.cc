@@ -30,9 +30,8 @@ JointSweep::JointSweep(CorrespondenceSearch* search, const ScanVisibility* visib
   CHECK(search_ != nullptr && visibility_ != nullptr);
 }
 
-double JointSweep::Loss(const SurfaceSamples& samples, const LinkMotion& motion, double q,
-                        const JointSweepOptions& options) {
-  const Pose T_world_link = motion.PoseAt(q);
+double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_link,
+                          const JointSweepOptions& options) {
   const Eigen::Matrix3d R = T_world_link.linear();
   const Eigen::Vector3d& t = T_world_link.translation();
   const bool have_normals = samples.normals.size() == samples.points.size();

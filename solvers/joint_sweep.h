@@ -17,6 +17,7 @@
 #ifndef EDGEFIT_SOLVERS_JOINT_SWEEP_H_
 #define EDGEFIT_SOLVERS_JOINT_SWEEP_H_
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,8 @@ namespace edgefit {
 struct JointSweepOptions {
   // Coarse step over the range: 1 degree for revolute joints (1.7 cm at 1 m,
   // inside the Eq. (9) basin), 5 mm for prismatic ones.
-  double revolute_step = 1.0 * 3.14159265358979323846 / 180.0;  // [rad]
-  double prismatic_step = 0.005;                               // [m]
+  double revolute_step = M_PI / 180.0;  // [rad]
+  double prismatic_step = 0.005;        // [m]
   // Refinements: each searches +/- one previous step around the best at a
   // tenth of it (1 -> 0.1 -> 0.01 degrees by default).
   int refinements = 2;
@@ -66,10 +67,15 @@ class JointSweep {
   // Borrowed; `search` must use the lattice (organized scans).
   JointSweep(CorrespondenceSearch* search, const ScanVisibility* visibility);
 
-  // The total loss at joint value q of `samples` (link frame, with normals)
-  // on `motion`.
+  // The total loss of `samples` (link frame, with normals) with the link at
+  // T_world_link; Loss at a joint value of `motion`. LossAt also scores
+  // free-link hypotheses (the base candidates of robot_fit).
+  double LossAt(const SurfaceSamples& samples, const Pose& T_world_link,
+                const JointSweepOptions& options);
   double Loss(const SurfaceSamples& samples, const LinkMotion& motion, double q,
-              const JointSweepOptions& options);
+              const JointSweepOptions& options) {
+    return LossAt(samples, motion.PoseAt(q), options);
+  }
   // Sweeps motion's range (a continuous joint: one turn) and returns the best
   // value. Fails on invalid options, a free motion or no samples.
   Status Sweep(const SurfaceSamples& samples, const LinkMotion& motion,

@@ -3,7 +3,9 @@
 #include <gflags/gflags.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 namespace edgefit::tools {
@@ -117,6 +119,24 @@ std::vector<std::string> SplitList(const std::string& list) {
     start = end + 1;
   }
   return items;
+}
+
+Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x, double* y,
+                     double* yaw) {
+  const std::vector<std::string> parts = SplitList(text);
+  if (parts.size() != 3) return Status::Error(flag + ": expected x,y,yaw_deg, got '" + text + "'");
+  double v[3];
+  for (size_t i = 0; i < 3; ++i) {
+    char* end = nullptr;
+    v[i] = std::strtod(parts[i].c_str(), &end);
+    if (*end != '\0' || !std::isfinite(v[i])) {
+      return Status::Error(flag + ": '" + parts[i] + "' is not a number");
+    }
+  }
+  *x = v[0];
+  *y = v[1];
+  *yaw = v[2] * M_PI / 180.0;
+  return Status::Ok();
 }
 
 }  // namespace edgefit::tools

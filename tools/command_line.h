@@ -48,6 +48,11 @@ void Progress(const std::string& message);
 // Splits "a,b,,c" into {"a", "b", "c"}.
 std::vector<std::string> SplitList(const std::string& list);
 
+// Parses a level pose on the floor, "x,y,yaw_deg" (metres, degrees), into x,
+// y [m] and yaw [rad]; errors name `flag`.
+Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x, double* y,
+                     double* yaw);
+
 
 }  // namespace edgefit::tools
 

@@ -53,23 +53,6 @@ json MatrixJson(const Pose& T) {
   return rows;
 }
 
-Status ParseInit(const std::string& text, Pose* T) {
-  std::vector<std::string> parts = SplitList(text);
-  double v[3];
-  if (parts.size() != 3) return Status::Error("--init: expected x,y,yaw_deg, got '" + text + "'");
-  for (int i = 0; i < 3; ++i) {
-    char* end = nullptr;
-    v[i] = std::strtod(parts[static_cast<size_t>(i)].c_str(), &end);
-    if (end == parts[static_cast<size_t>(i)].c_str() || *end != '\0' || !std::isfinite(v[i])) {
-      return Status::Error("--init: '" + parts[static_cast<size_t>(i)] + "' is not a number");
-    }
-  }
-  *T = Pose::Identity();
-  T->linear() = Eigen::AngleAxisd(v[2] * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T->translation() = Eigen::Vector3d(v[0], v[1], 0.0);
-  return Status::Ok();
-}
-
 Status OptionsFromFlags(RobotFitOptions* options) {
   options->edges.w_high = FLAGS_w_high;
   options->seed = FLAGS_seed;
@@ -86,7 +69,9 @@ Status OptionsFromFlags(RobotFitOptions* options) {
       ParseJointParameterization(FLAGS_parameterization, &options->joint_icp.parameterization));
   if (!FLAGS_init.empty()) {
     options->has_initial_base = true;
-    EDGEFIT_RETURN_IF_ERROR(ParseInit(FLAGS_init, &options->T_world_base_initial));
+    double x = 0.0, y = 0.0, yaw = 0.0;
+    EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));
+    options->T_world_base_initial = PoseFromXyYaw(x, y, yaw);
   }
   std::string error;
   if (!options->IsValid(&error)) return Status::Error(error);

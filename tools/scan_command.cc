@@ -51,23 +51,6 @@ namespace {
 // Independent random streams from one --seed.
 uint64_t SubSeed(uint64_t seed, uint64_t stream) { return SplitMix64::StreamSeed(seed, stream); }
 
-Status ParseBase(const std::string& text, double* x, double* y, double* yaw) {
-  const std::vector<std::string> parts = SplitList(text);
-  double v[3];
-  if (parts.size() != 3) return Status::Error("--base: expected x,y,yaw_deg, got '" + text + "'");
-  for (int i = 0; i < 3; ++i) {
-    char* end = nullptr;
-    v[i] = std::strtod(parts[i].c_str(), &end);
-    if (*end != '\0' || !std::isfinite(v[i])) {
-      return Status::Error("--base: '" + parts[i] + "' is not a number");
-    }
-  }
-  *x = v[0];
-  *y = v[1];
-  *yaw = v[2] * M_PI / 180.0;
-  return Status::Ok();
-}
-
 // "x,y,z[,yaw_deg]:..." -> level scanner poses; a missing yaw faces the asset.
 Status ParseScannerPositions(const std::string& text, const Eigen::AlignedBox3d& asset_box,
                              std::vector<Pose>* T_world_scanners) {
@@ -189,7 +172,7 @@ int RunScan(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
   double x = 0.0, y = 0.0, yaw = 0.0;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseBase(FLAGS_base, &x, &y, &yaw));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseXyYawDeg("--base", FLAGS_base, &x, &y, &yaw));
   const Pose T_world_base = PoseFromXyYaw(x, y, yaw);
   std::vector<double> q;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseJoints(model, T_world_base, &q));

@@ -143,9 +143,7 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     ThinSamples(options.max_sweep_samples, &base_sweep);
     double best_loss = std::numeric_limits<double>::infinity();
     for (const Pose& candidate : result->base_rough.candidates) {
-      LinkMotion at = LinkMotion::Free();
-      at.T_world_joint = candidate;
-      const double loss = sweep.Loss(base_sweep, at, 0.0, sweep_options);
+      const double loss = sweep.LossAt(base_sweep, candidate, sweep_options);
       if (loss < best_loss) {
         best_loss = loss;
         T_world_base = candidate;
@@ -179,11 +177,10 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     AppendBodySamples(body, sweep_samples, Pose::Identity(), &body_sweep);
     // A symmetric (or empty) body cannot fix its angle: the sweep adds its
     // children at their current values (Sec. 5.2.1).
-    BodyQuality quality;
-    quality.symmetric = body_icp.points.empty() ||
-                        (motion.type == LinkMotion::Type::kRevolute &&
-                         IsRotationallySymmetric(body_icp, j.axis, options.symmetric_share));
-    if (quality.symmetric) {
+    const bool symmetric = body_icp.points.empty() ||
+                           (motion.type == LinkMotion::Type::kRevolute &&
+                            IsRotationallySymmetric(body_icp, j.axis, options.symmetric_share));
+    if (symmetric) {
       for (const int link : body.links) {
         for (const int child_joint : model.links()[static_cast<size_t>(link)].child_joints) {
           const Joint& c = model.joints()[static_cast<size_t>(child_joint)];
@@ -207,19 +204,15 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     state.q = sweep_summary.q;
     EDGEFIT_RETURN_IF_ERROR(icp.Fit(body_icp, motion, joint_icp, &state, &summary));
     // A joint with more than a turn of range has several values for one
-    // pose (the sweep keeps the lowest): report the one nearest zero.
+    // pose (the sweep keeps the lowest): report the one nearest zero when
+    // the limits allow it.
     if (motion.type == LinkMotion::Type::kRevolute) {
-      for (const double turn : {2.0 * M_PI, -2.0 * M_PI}) {
-        while (std::abs(state.q + turn) < std::abs(state.q) &&
-               (!motion.has_limits || (state.q + turn >= motion.lower && state.q + turn <= motion.upper))) {
-          state.q += turn;
-        }
-      }
+      const double nearest_zero = std::remainder(state.q, 2.0 * M_PI);
+      if (motion.Clamp(nearest_zero) == nearest_zero) state.q = nearest_zero;
     }
     q[static_cast<size_t>(joint)] = state.q;
     (void)model.ResolveDependentJoints(&q);
-    const bool symmetric = quality.symmetric;
-    quality = Quality(model, body, body_icp, summary, options);
+    BodyQuality quality = Quality(model, body, body_icp, summary, options);
     quality.symmetric = symmetric;
     quality.sweep_value = sweep_summary.q;
     result->bodies.push_back(quality);
