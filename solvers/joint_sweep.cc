@@ -3,8 +3,10 @@
 #include <glog/logging.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "costs/sweep_loss.h"
 
@@ -22,6 +24,9 @@ bool JointSweepOptions::IsValid(std::string* error) const {
   if (!(occluded_loss >= 0.0)) return fail("occluded_loss must be >= 0");
   if (!(visibility_tolerance >= 0.0)) return fail("visibility_tolerance must be >= 0");
   if (lattice_window < 0) return fail("lattice_window must be >= 0");
+  if (!(distinct_revolute > 0.0) || !(distinct_prismatic > 0.0)) {
+    return fail("distinct_revolute and distinct_prismatic must be > 0");
+  }
   return true;
 }
 
@@ -79,33 +84,64 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
     lower = -M_PI;
     upper = M_PI;
   }
-  double step = revolute ? options.revolute_step : options.prismatic_step;
-  double best_q = lower, best_loss = std::numeric_limits<double>::infinity();
-  auto consider = [&](double q) {
-    const double loss = Loss(samples, motion, q, options);
+  const double coarse = revolute ? options.revolute_step : options.prismatic_step;
+  auto evaluate = [&](double q) {
     ++summary->evaluations;
-    if (loss < best_loss) {
-      best_loss = loss;
-      best_q = q;
-    }
+    return Loss(samples, motion, q, options);
   };
-  const int steps = static_cast<int>(std::floor((upper - lower) / step + 1e-9));
-  for (int k = 0; k <= steps; ++k) consider(lower + k * step);
-  if (lower + steps * step < upper - 1e-12) consider(upper);
-  for (int r = 0; r < options.refinements; ++r) {
-    const double centre = best_q;
-    const double fine = step / 10.0;
-    for (int k = -10; k <= 10; ++k) {
-      if (k == 0) continue;
-      const double q = centre + k * fine;
-      if (motion.has_limits && (q < lower || q > upper)) continue;
-      consider(q);
+  // The coarse profile over the whole range.
+  std::vector<double> qs, losses;
+  const int steps = static_cast<int>(std::floor((upper - lower) / coarse + 1e-9));
+  for (int k = 0; k <= steps; ++k) qs.push_back(lower + k * coarse);
+  if (qs.back() < upper - 1e-12) qs.push_back(upper);
+  for (const double q : qs) losses.push_back(evaluate(q));
+  // Coarse to fine around a start: +/- one step at a tenth of it.
+  auto refine = [&](double q, double loss, double* best_q, double* best_loss) {
+    double step = coarse;
+    for (int r = 0; r < options.refinements; ++r) {
+      const double centre = q;
+      const double fine = step / 10.0;
+      for (int k = -10; k <= 10; ++k) {
+        const double candidate = centre + k * fine;
+        if (k == 0 || (motion.has_limits && (candidate < lower || candidate > upper))) continue;
+        const double l = evaluate(candidate);
+        if (l < loss) {
+          loss = l;
+          q = candidate;
+        }
+      }
+      step = fine;
     }
-    step = fine;
+    *best_q = q;
+    *best_loss = loss;
+  };
+  const size_t n = qs.size();
+  const size_t best = static_cast<size_t>(std::min_element(losses.begin(), losses.end()) -
+                                          losses.begin());
+  refine(qs[best], losses[best], &summary->q, &summary->loss);
+
+  // The runner-up: the lowest coarse local minimum at least `distinct` from
+  // the best (a full turn wraps around).
+  const bool full_turn = revolute && upper - lower >= 2.0 * M_PI - 1.5 * coarse;
+  const double distinct = revolute ? options.distinct_revolute : options.distinct_prismatic;
+  auto distance = [&](double a, double b) {
+    const double d = std::abs(a - b);
+    return full_turn ? std::min(d, 2.0 * M_PI - d) : d;
+  };
+  size_t runner_up = n;
+  for (size_t k = 0; k < n; ++k) {
+    const bool has_left = k > 0 || full_turn, has_right = k + 1 < n || full_turn;
+    const double left = has_left ? losses[(k + n - 1) % n] : losses[k];
+    const double right = has_right ? losses[(k + 1) % n] : losses[k];
+    if (losses[k] > left || losses[k] > right) continue;
+    if (distance(qs[k], summary->q) < distinct) continue;
+    if (runner_up == n || losses[k] < losses[runner_up]) runner_up = k;
   }
-  summary->q = best_q;
-  summary->loss = best_loss;
-  summary->mean_loss = best_loss / static_cast<double>(samples.points.size());
+  if (runner_up < n) {
+    summary->has_runner_up = true;
+    refine(qs[runner_up], losses[runner_up], &summary->runner_up_q, &summary->runner_up_loss);
+  }
+  summary->mean_loss = summary->loss / static_cast<double>(samples.points.size());
   summary->seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();

@@ -18,6 +18,7 @@
 #define EDGEFIT_SOLVERS_JOINT_SWEEP_H_
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,11 @@ struct JointSweepOptions {
   // --weighting=uniform: w_edge = 1 in Eq. (9).
   bool uniform_weights = false;
   int lattice_window = 2;  // CorrespondenceOptions::window
+  // The runner-up is the best coarse local minimum at least this far from
+  // the best value: a second pose of the link that fits about as well
+  // (a near-symmetric flange turned half a turn) makes the fit ambiguous.
+  double distinct_revolute = 5.0 * M_PI / 180.0;  // [rad]
+  double distinct_prismatic = 0.02;               // [m]
 
   bool IsValid(std::string* error) const;
 };
@@ -58,6 +64,10 @@ struct JointSweepSummary {
   double q = 0.0;          // best joint value [rad] or [m]
   double loss = 0.0;       // its total Eq. (9) loss [m]
   double mean_loss = 0.0;  // loss / samples [m]
+  // The runner-up (JointSweepOptions::distinct_*), refined like the best.
+  bool has_runner_up = false;
+  double runner_up_q = 0.0;
+  double runner_up_loss = std::numeric_limits<double>::infinity();
   int evaluations = 0;     // joint values scored
   double seconds = 0.0;
 };
@@ -77,7 +87,7 @@ class JointSweep {
     return LossAt(samples, motion.PoseAt(q), options);
   }
   // Sweeps motion's range (a continuous joint: one turn) and returns the best
-  // value. Fails on invalid options, a free motion or no samples.
+  // value and the runner-up. Fails on invalid options, a free motion or no samples.
   Status Sweep(const SurfaceSamples& samples, const LinkMotion& motion,
                const JointSweepOptions& options, JointSweepSummary* summary);
 

@@ -230,8 +230,21 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
   }
 
   // Quality at the returned pose.
-  gated.max_distance = final_gate;
-  SelectAndPose(samples, T_world_link, options.visibility, final_gate);
+  Measure(samples, T_world_link, options, final_gate, crop_world, summary);
+
+  state->T_world_link = T_world_link;
+  state->q = motion.constrained() ? q : 0.0;
+  summary->seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+void WeightedIcp::Measure(const SurfaceSamples& samples, const Pose& T_world_link,
+                          const WeightedIcpOptions& options, double gate,
+                          const Eigen::AlignedBox3d& crop_world, WeightedIcpSummary* summary) {
+  CorrespondenceOptions gated = options.correspondence;
+  gated.max_distance = gate;
+  SelectAndPose(samples, T_world_link, options.visibility, gate);
   summary->visible_points = q_world_.size();
   search_->Find(q_world_, crop_world, gated, &correspondences_);
   double sum_squared = 0.0;
@@ -245,11 +258,23 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
                               : 0.0;
   summary->rms =
       summary->inliers > 0 ? std::sqrt(sum_squared / static_cast<double>(summary->inliers)) : 0.0;
+}
 
-  state->T_world_link = T_world_link;
-  state->q = motion.constrained() ? q : 0.0;
-  summary->seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+Status WeightedIcp::Evaluate(const SurfaceSamples& samples, const Pose& T_world_link,
+                             const WeightedIcpOptions& options, WeightedIcpSummary* summary) {
+  CHECK(summary != nullptr);
+  std::string error;
+  if (!options.IsValid(&error)) return Status::Error("weighted ICP: " + error);
+  if (samples.points.empty()) return Status::Error("weighted ICP: the link has no CAD samples");
+  *summary = WeightedIcpSummary();
+  summary->source_points = samples.points.size();
+  const double gate = std::min(options.final_gate, options.correspondence.max_distance);
+  Eigen::AlignedBox3d crop_world;
+  for (const Eigen::Vector3f& p : samples.points) crop_world.extend(T_world_link * p.cast<double>());
+  crop_world.min().array() -= gate + options.crop_margin;
+  crop_world.max().array() += gate + options.crop_margin;
+  Measure(samples, T_world_link, options, gate, crop_world, summary);
+  summary->stop_reason = IcpStopReason::kConverged;
   return Status::Ok();
 }
 

@@ -170,6 +170,12 @@ class WeightedIcp {
              const WeightedIcpOptions& options, LinkState* state,
              WeightedIcpSummary* summary);
 
+  // The quality fields of a summary (visible_points, inliers, inlier_share,
+  // rms) for the samples at T_world_link with the final gate, without
+  // fitting. Errors: invalid options, no samples.
+  Status Evaluate(const SurfaceSamples& samples, const Pose& T_world_link,
+                  const WeightedIcpOptions& options, WeightedIcpSummary* summary);
+
  private:
   const ScanSet* scans_;
   CorrespondenceSearch* search_;
@@ -179,6 +185,10 @@ class WeightedIcp {
   // occlusion tolerance.
   void SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
                      WeightedIcpOptions::Visibility visibility, double gate);
+  // The quality fields of *summary at T_world_link with gate [m].
+  void Measure(const SurfaceSamples& samples, const Pose& T_world_link,
+               const WeightedIcpOptions& options, double gate,
+               const Eigen::AlignedBox3d& crop_world, WeightedIcpSummary* summary);
   ScanVisibility visibility_;
   // Buffers reused between iterations and fits.
   std::vector<Eigen::Vector3f> p_used_link_;    // the samples of the iteration

@@ -20,13 +20,10 @@
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/random_joints.h"
-#include "edgefit/scanner/scanner_placement.h"
+#include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/label_file.h"
 #include "edgefit/scanner/truth.h"
 #include "edgefit/scanner/virtual_scanner.h"
-#include "edgefit/scene/accessories.h"
-#include "edgefit/scene/environment.h"
-#include "edgefit/scene/model_scene.h"
 
 DEFINE_string(joints, "",
               "Joint values: name=value,... in rad / m, or with a unit: joint_2=-30deg, "
@@ -47,9 +44,6 @@ DEFINE_int32(clutter, 4, "Clutter objects (pillars, boxes, a fence panel) away f
 
 namespace edgefit::tools {
 namespace {
-
-// Independent random streams from one --seed.
-uint64_t SubSeed(uint64_t seed, uint64_t stream) { return SplitMix64::StreamSeed(seed, stream); }
 
 // "x,y,z[,yaw_deg]:..." -> level scanner poses; a missing yaw faces the asset.
 Status ParseScannerPositions(const std::string& text, const Eigen::AlignedBox3d& asset_box,
@@ -90,7 +84,7 @@ Status ChooseJoints(const KinematicModel& model, const Pose& T_world_base,
   if (FLAGS_random_pose) {
     // The floor of the scene is z = 0 (EnvironmentOptions::floor_z).
     if (!RandomJointValuesAboveFloor(model, T_world_base, /*floor_z=*/0.0,
-                                     SubSeed(FLAGS_seed, 0), q)) {
+                                     SplitMix64::StreamSeed(FLAGS_seed, 0), q)) {
       return Status::Error(FLAGS_urdf + ": no random posture of this model stays above the floor "
                            "(is the base below z = 0?)");
     }
@@ -176,45 +170,32 @@ int RunScan(const Command& command) {
   const Pose T_world_base = PoseFromXyYaw(x, y, yaw);
   std::vector<double> q;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseJoints(model, T_world_base, &q));
-  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
   const Eigen::AlignedBox3d asset_box = model.BoundingBox(q, T_world_base);
   if (asset_box.isEmpty()) return BadInput(command, FLAGS_urdf + ": the model has no geometry to scan");
 
-  Scene scene;
-  AddModelToScene(model, T_world_link, &scene);
-  if (FLAGS_accessories) {
-    AccessoryOptions accessory_options;
-    accessory_options.seed = SubSeed(FLAGS_seed, 1);
-    AddAccessories(model, q, T_world_link, accessory_options, &scene);
-  }
-  EnvironmentOptions environment_options;
-  environment_options.clutter_count = FLAGS_clutter;
-  environment_options.seed = SubSeed(FLAGS_seed, 2);
-  AddEnvironment(asset_box, environment_options, &scene);
-
-  std::vector<Pose> T_world_scanners;
-  if (FLAGS_scanner_at.empty()) {
-    ScannerPlacementOptions placement;
-    placement.count = FLAGS_scanners;
-    placement.seed = SubSeed(FLAGS_seed, 3);
-    T_world_scanners = PlaceScanners(asset_box, placement);
-  } else {
+  AssetScanOptions options;
+  options.accessories = FLAGS_accessories;
+  options.clutter = FLAGS_clutter;
+  options.scanners = FLAGS_scanners;
+  if (!FLAGS_scanner_at.empty()) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(
-        command, ParseScannerPositions(FLAGS_scanner_at, asset_box, &T_world_scanners));
+        command, ParseScannerPositions(FLAGS_scanner_at, asset_box, &options.T_world_scanners));
   }
-
-  VirtualScanOptions scan_options;
-  scan_options.spacing = FLAGS_spacing_mm * 1e-3;
-  scan_options.noise_sigma = FLAGS_noise_mm * 1e-3;
-  scan_options.max_range = FLAGS_max_range_m;
-  scan_options.full_dome = FLAGS_full_dome;
-  scan_options.seed = SubSeed(FLAGS_seed, 4);
+  options.scan.spacing = FLAGS_spacing_mm * 1e-3;
+  options.scan.noise_sigma = FLAGS_noise_mm * 1e-3;
+  options.scan.max_range = FLAGS_max_range_m;
+  options.scan.full_dome = FLAGS_full_dome;
+  options.seed = FLAGS_seed;
   // The window covers every non-background mesh: the model and its accessories.
-  Progress("scan: casting rays from " + std::to_string(T_world_scanners.size()) + " scanners");
+  Progress("scan: casting rays from " +
+           std::to_string(options.T_world_scanners.empty() ? FLAGS_scanners
+                                                           : options.T_world_scanners.size()) +
+           " scanners");
   VirtualScan result;
+  std::vector<Pose> T_world_scanners;
   const auto cast_start = std::chrono::steady_clock::now();
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                               ScanScene(scene, T_world_scanners, scan_options, &result));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, ScanAsset(model, q, T_world_base, options, &result, &T_world_scanners));
   const double cast_seconds = SecondsSince(cast_start);
 
   Truth truth;
@@ -227,6 +208,8 @@ int RunScan(const Command& command) {
   truth.base_yaw = yaw;
   truth.T_world_scanners = T_world_scanners;
   truth.seed = FLAGS_seed;
+  VirtualScanOptions scan_options = options.scan;
+  scan_options.seed = AssetScanSeed(FLAGS_seed, AssetScanStream::kNoise);
   truth.settings = MakeTruthSettings(scan_options, static_cast<int>(T_world_scanners.size()),
                                      FLAGS_accessories,
                                      FLAGS_random_pose);

@@ -24,6 +24,12 @@ struct Body {
 // The body of `link`: it and the links reached from it through fixed joints.
 Body MakeBody(const KinematicModel& model, int link, int joint);
 
+// The subtree of `link`: it and every link below it through any joint,
+// posed by T_world_link (forward kinematics at the current values), in the
+// frame of `link`.
+Body MakeSubtree(const KinematicModel& model, int link, int joint,
+                 const std::vector<Pose>& T_world_link);
+
 // Samples of the body's links (samples indexed like model.links()) in the
 // body frame; T_body_extra places extra samples (another body's, posed).
 void AppendBodySamples(const Body& body, const std::vector<SurfaceSamples>& link_samples,

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "edgefit/correspondence/correspondence_search.h"
 #include "edgefit/model/surface_sampler.h"
@@ -29,6 +30,13 @@ WeightedIcpOptions RobotFitOptions::DefaultJointIcp() {
   return options;
 }
 
+WeightedIcpOptions RobotFitOptions::DefaultSubtreeIcp() {
+  WeightedIcpOptions options;
+  options.correspondence.max_distance = 0.01;  // starts at the chain's fit
+  options.max_iterations = 30;
+  return options;
+}
+
 bool RobotFitOptions::IsValid(std::string* error) const {
   auto fail = [error](const std::string& message) {
     if (error != nullptr) *error = message;
@@ -38,7 +46,7 @@ bool RobotFitOptions::IsValid(std::string* error) const {
   if (!(icp_spacing > 0.0) || !(sweep_spacing > 0.0)) return fail("sample spacings must be > 0");
   if (max_icp_samples < 100 || max_sweep_samples < 100) return fail("sample budgets must be >= 100");
   if (!base_rough.IsValid(error) || !base_icp.IsValid(error) || !sweep.IsValid(error) ||
-      !joint_icp.IsValid(error)) {
+      !joint_icp.IsValid(error) || !subtree_icp.IsValid(error)) {
     return false;
   }
   if (!(min_inlier_share >= 0.0 && min_inlier_share <= 1.0)) {
@@ -49,6 +57,14 @@ bool RobotFitOptions::IsValid(std::string* error) const {
 }
 
 namespace {
+
+// A joint with more than a turn of range has several values for one pose
+// (the sweep keeps the lowest): the one nearest zero when the limits allow.
+double NearestZeroTurn(const LinkMotion& motion, double q) {
+  if (motion.type != LinkMotion::Type::kRevolute) return q;
+  const double nearest_zero = std::remainder(q, 2.0 * M_PI);
+  return motion.Clamp(nearest_zero) == nearest_zero ? nearest_zero : q;
+}
 
 double Since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -67,6 +83,198 @@ BodyQuality Quality(const KinematicModel& model, const Body& body, const Surface
   quality.ok = summary.inlier_share >= options.min_inlier_share && summary.rms <= options.max_rms;
   return quality;
 }
+
+// What the chain pass found for one independent joint.
+struct JointRecord {
+  int joint = -1;
+  bool symmetric = false;  // the sweep and ICP carried the children
+  JointSweepSummary sweep;
+  double sweep_margin = std::numeric_limits<double>::infinity();  // runner-up, per sample [m]
+  int icp_iterations = 0;
+  // The subtree pass's ambiguity check (RobotFitOptions::ambiguity_*).
+  bool ambiguous = false;
+  double alternative = 0.0;
+  double margin = std::numeric_limits<double>::infinity();
+};
+
+// Sec. 5.2-5.3 over the joints of one model, parents first.
+class ChainFitter {
+ public:
+  ChainFitter(const KinematicModel& model, const RobotFitOptions& options,
+              const std::vector<SurfaceSamples>& icp_samples,
+              const std::vector<SurfaceSamples>& sweep_samples, WeightedIcp* icp,
+              JointSweep* sweep, std::function<void(const std::string&)> say)
+      : model_(model),
+        options_(options),
+        icp_samples_(icp_samples),
+        sweep_samples_(sweep_samples),
+        icp_(icp),
+        sweep_(sweep),
+        say_(std::move(say)),
+        joint_icp_(options.joint_icp),
+        subtree_icp_(options.subtree_icp),
+        sweep_options_(options.sweep) {
+    joint_icp_.uniform_weights = subtree_icp_.uniform_weights = sweep_options_.uniform_weights =
+        options.uniform_weights;
+  }
+
+  // The chain pass: per joint the Eq. (9) sweep and the joint ICP; *q gets
+  // every joint (dependent ones resolved as far as possible).
+  Status FitJoints(const Pose& T_world_base, std::vector<double>* q,
+                   std::vector<JointRecord>* records) {
+    *q = model_.ZeroJoints();
+    (void)model_.ResolveDependentJoints(q);  // best effort until every joint is fitted
+    records->clear();
+    for (const int joint : model_.joint_order()) {
+      const Joint& j = model_.joints()[static_cast<size_t>(joint)];
+      if (!j.IsIndependent()) continue;
+      JointRecord record;
+      record.joint = joint;
+      EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &record));
+      records->push_back(record);
+    }
+    return Status::Ok();
+  }
+
+  // Extension of Sec. 5.2.2: each joint once more, parents first, with all
+  // it carries (its subtree at the fitted values): a nearly round link (a
+  // wrist) fits its angle poorly alone; its children's lever fixes it. A
+  // joint whose sweep had a close runner-up is fitted from there as well;
+  // the lower Eq. (9) loss wins, and a small margin makes it ambiguous.
+  Status RefineSubtrees(const Pose& T_world_base, std::vector<JointRecord>* records,
+                        std::vector<double>* q) {
+    for (JointRecord& record : *records) {
+      const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+      const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
+      const LinkMotion motion =
+          LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
+      const Body subtree = MakeSubtree(model_, j.child_link, record.joint, T_world_link);
+      SurfaceSamples subtree_icp, subtree_sweep;
+      AppendBodySamples(subtree, icp_samples_, Pose::Identity(), &subtree_icp);
+      AppendBodySamples(subtree, sweep_samples_, Pose::Identity(), &subtree_sweep);
+      ThinSamples(options_.max_icp_samples, &subtree_icp);
+      ThinSamples(options_.max_sweep_samples, &subtree_sweep);
+      if (subtree_icp.points.empty()) continue;
+      const double before = (*q)[static_cast<size_t>(record.joint)];
+      LinkState state;
+      state.q = before;
+      WeightedIcpSummary summary;
+      EDGEFIT_RETURN_IF_ERROR(icp_->Fit(subtree_icp, motion, subtree_icp_, &state, &summary));
+      if (record.sweep_margin < options_.ambiguity_check_loss && !subtree_sweep.points.empty()) {
+        LinkState other;
+        other.q = state.q + (record.sweep.runner_up_q - record.sweep.q);
+        WeightedIcpSummary other_summary;
+        EDGEFIT_RETURN_IF_ERROR(
+            icp_->Fit(subtree_icp, motion, subtree_icp_, &other, &other_summary));
+        const double loss = sweep_->Loss(subtree_sweep, motion, state.q, sweep_options_);
+        const double other_loss = sweep_->Loss(subtree_sweep, motion, other.q, sweep_options_);
+        if (other_loss < loss) {
+          std::swap(state, other);
+          std::swap(summary, other_summary);
+        }
+        record.alternative = NearestZeroTurn(motion, other.q);
+        record.margin =
+            std::abs(other_loss - loss) / static_cast<double>(subtree_sweep.points.size());
+        record.ambiguous = record.margin < options_.ambiguity_mean_loss;
+      }
+      state.q = NearestZeroTurn(motion, state.q);
+      (*q)[static_cast<size_t>(record.joint)] = state.q;
+      (void)model_.ResolveDependentJoints(q);
+      char line[320];
+      std::snprintf(line, sizeof(line), "subtrees: %s %.5f -> %.5f%s, %s", j.name.c_str(), before,
+                    state.q, Describe(record).c_str(), summary.BriefReport().c_str());
+      say_(line);
+    }
+    return Status::Ok();
+  }
+
+ private:
+  static std::string Describe(const JointRecord& record) {
+    if (!std::isfinite(record.margin)) return "";
+    char text[128];
+    std::snprintf(text, sizeof(text), " (other value %.5f: %.3f mm/sample worse%s)",
+                  record.alternative, 1e3 * record.margin, record.ambiguous ? ", AMBIGUOUS" : "");
+    return text;
+  }
+
+  Status FitJoint(const Pose& T_world_base, std::vector<double>* q, JointRecord* record) {
+    const Joint& j = model_.joints()[static_cast<size_t>(record->joint)];
+    const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
+    const LinkMotion motion =
+        LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
+    const Body body = MakeBody(model_, j.child_link, record->joint);
+    SurfaceSamples body_icp, body_sweep;
+    AppendBodySamples(body, icp_samples_, Pose::Identity(), &body_icp);
+    AppendBodySamples(body, sweep_samples_, Pose::Identity(), &body_sweep);
+    // A symmetric (or empty) body cannot fix its angle: the sweep and the
+    // ICP add its children at their current values (Sec. 5.2.1). So does a
+    // body whose own sweep finds a second value nearly as good (a round
+    // wrist with a small boss: the ring test passes it, the scan cannot).
+    const bool revolute = motion.type == LinkMotion::Type::kRevolute;
+    record->symmetric =
+        body_icp.points.empty() ||
+        (revolute && IsRotationallySymmetric(body_icp, j.axis, options_.symmetric_share));
+    auto add_children = [&] {
+      for (const int link : body.links) {
+        for (const int child_joint : model_.links()[static_cast<size_t>(link)].child_joints) {
+          const Joint& c = model_.joints()[static_cast<size_t>(child_joint)];
+          if (c.type == JointType::kFixed) continue;
+          const Body child = MakeBody(model_, c.child_link, child_joint);
+          const Pose T_body_child = T_world_link[static_cast<size_t>(j.child_link)].inverse() *
+                                    T_world_link[static_cast<size_t>(c.child_link)];
+          AppendBodySamples(child, sweep_samples_, T_body_child, &body_sweep);
+          AppendBodySamples(child, icp_samples_, T_body_child, &body_icp);
+        }
+      }
+    };
+    if (record->symmetric) add_children();
+    ThinSamples(options_.max_icp_samples, &body_icp);
+    ThinSamples(options_.max_sweep_samples, &body_sweep);
+    if (body_icp.points.empty()) {
+      return Status::Error("robot fit: joint '" + j.name + "' moves no mesh");
+    }
+    auto sweep = [&] {
+      EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, motion, sweep_options_, &record->sweep));
+      record->sweep_margin = record->sweep.has_runner_up
+                                 ? (record->sweep.runner_up_loss - record->sweep.loss) /
+                                       static_cast<double>(body_sweep.points.size())
+                                 : std::numeric_limits<double>::infinity();
+      return Status::Ok();
+    };
+    EDGEFIT_RETURN_IF_ERROR(sweep());
+    if (!record->symmetric && revolute && record->sweep_margin < options_.flat_sweep_loss) {
+      record->symmetric = true;
+      add_children();
+      ThinSamples(options_.max_icp_samples, &body_icp);
+      ThinSamples(options_.max_sweep_samples, &body_sweep);
+      EDGEFIT_RETURN_IF_ERROR(sweep());
+    }
+    LinkState state;
+    state.q = record->sweep.q;
+    WeightedIcpSummary summary;
+    EDGEFIT_RETURN_IF_ERROR(icp_->Fit(body_icp, motion, joint_icp_, &state, &summary));
+    record->icp_iterations = summary.iterations;
+    (*q)[static_cast<size_t>(record->joint)] = NearestZeroTurn(motion, state.q);
+    (void)model_.ResolveDependentJoints(q);
+    char line[320];
+    std::snprintf(line, sizeof(line), "chain: %s = %.5f (sweep %.4f%s; runner-up %.3f mm/sample worse), %s",
+                  j.name.c_str(), (*q)[static_cast<size_t>(record->joint)], record->sweep.q,
+                  record->symmetric ? ", symmetric: children added" : "",
+                  1e3 * record->sweep_margin, summary.BriefReport().c_str());
+    say_(line);
+    return Status::Ok();
+  }
+
+  const KinematicModel& model_;
+  const RobotFitOptions& options_;
+  const std::vector<SurfaceSamples>& icp_samples_;
+  const std::vector<SurfaceSamples>& sweep_samples_;
+  WeightedIcp* icp_;
+  JointSweep* sweep_;
+  std::function<void(const std::string&)> say_;
+  WeightedIcpOptions joint_icp_, subtree_icp_;
+  JointSweepOptions sweep_options_;
+};
 
 }  // namespace
 
@@ -164,82 +372,61 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
 
   // Sec. 5.2-5.3: the joints, parents first.
   stage = std::chrono::steady_clock::now();
-  std::vector<double> q = model.ZeroJoints();
-  (void)model.ResolveDependentJoints(&q);  // best effort until every joint is fitted
-  for (const int joint : model.joint_order()) {
-    const Joint& j = model.joints()[static_cast<size_t>(joint)];
-    if (!j.IsIndependent()) continue;
-    const std::vector<Pose> T_world_link = model.ForwardKinematics(q, result->T_world_base);
-    const LinkMotion motion = LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
-    const Body body = MakeBody(model, j.child_link, joint);
-    SurfaceSamples body_icp, body_sweep;
-    AppendBodySamples(body, icp_samples, Pose::Identity(), &body_icp);
-    AppendBodySamples(body, sweep_samples, Pose::Identity(), &body_sweep);
-    // A symmetric (or empty) body cannot fix its angle: the sweep adds its
-    // children at their current values (Sec. 5.2.1).
-    const bool symmetric = body_icp.points.empty() ||
-                           (motion.type == LinkMotion::Type::kRevolute &&
-                            IsRotationallySymmetric(body_icp, j.axis, options.symmetric_share));
-    if (symmetric) {
-      for (const int link : body.links) {
-        for (const int child_joint : model.links()[static_cast<size_t>(link)].child_joints) {
-          const Joint& c = model.joints()[static_cast<size_t>(child_joint)];
-          if (c.type == JointType::kFixed) continue;
-          const Body child = MakeBody(model, c.child_link, child_joint);
-          const Pose T_body_child = T_world_link[static_cast<size_t>(j.child_link)].inverse() *
-                                    T_world_link[static_cast<size_t>(c.child_link)];
-          AppendBodySamples(child, sweep_samples, T_body_child, &body_sweep);
-          if (body_icp.points.empty()) AppendBodySamples(child, icp_samples, T_body_child, &body_icp);
-        }
-      }
-    }
-    ThinSamples(options.max_icp_samples, &body_icp);
-    ThinSamples(options.max_sweep_samples, &body_sweep);
-    if (body_icp.points.empty()) {
-      return Status::Error("robot fit: joint '" + j.name + "' moves no mesh");
-    }
-    JointSweepSummary sweep_summary;
-    EDGEFIT_RETURN_IF_ERROR(sweep.Sweep(body_sweep, motion, sweep_options, &sweep_summary));
-    LinkState state;
-    state.q = sweep_summary.q;
-    EDGEFIT_RETURN_IF_ERROR(icp.Fit(body_icp, motion, joint_icp, &state, &summary));
-    // A joint with more than a turn of range has several values for one
-    // pose (the sweep keeps the lowest): report the one nearest zero when
-    // the limits allow it.
-    if (motion.type == LinkMotion::Type::kRevolute) {
-      const double nearest_zero = std::remainder(state.q, 2.0 * M_PI);
-      if (motion.Clamp(nearest_zero) == nearest_zero) state.q = nearest_zero;
-    }
-    q[static_cast<size_t>(joint)] = state.q;
-    (void)model.ResolveDependentJoints(&q);
-    BodyQuality quality = Quality(model, body, body_icp, summary, options);
-    quality.symmetric = symmetric;
-    quality.sweep_value = sweep_summary.q;
-    result->bodies.push_back(quality);
-    char line[256];
-    std::snprintf(line, sizeof(line), "chain: %s = %.5f (sweep %.4f%s), %s", j.name.c_str(),
-                  state.q, sweep_summary.q, symmetric ? ", symmetric: child's loss added" : "",
-                  summary.BriefReport().c_str());
-    say(line);
+  ChainFitter chain(model, options, icp_samples, sweep_samples, &icp, &sweep, say);
+  std::vector<double> q;
+  std::vector<JointRecord> records;
+  EDGEFIT_RETURN_IF_ERROR(chain.FitJoints(result->T_world_base, &q, &records));
+  if (options.refine_subtrees) {
+    EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, &records, &q));
   }
   const Status resolved = model.ResolveDependentJoints(&q);
   result->q = q;
   result->timings.chain = Since(stage);
+
+  // Quality of every body alone at the final values.
+  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, result->T_world_base);
+  for (const JointRecord& record : records) {
+    const Body body = MakeBody(model, model.joints()[static_cast<size_t>(record.joint)].child_link,
+                               record.joint);
+    SurfaceSamples samples;
+    AppendBodySamples(body, icp_samples, Pose::Identity(), &samples);
+    ThinSamples(options.max_icp_samples, &samples);
+    if (samples.points.empty()) continue;  // an empty link: nothing to judge
+    EDGEFIT_RETURN_IF_ERROR(icp.Evaluate(samples, T_world_link[static_cast<size_t>(body.link)],
+                                         joint_icp, &summary));
+    BodyQuality quality = Quality(model, body, samples, summary, options);
+    quality.icp_iterations = record.icp_iterations;
+    quality.symmetric = record.symmetric;
+    quality.sweep_value = record.sweep.q;
+    quality.ambiguous = record.ambiguous;
+    quality.alternative_value = record.alternative;
+    quality.ambiguity_margin = record.margin;
+    quality.ok = quality.ok && !quality.ambiguous;
+    result->bodies.push_back(quality);
+  }
   result->timings.total = Since(start);
 
   result->ok = resolved.ok();
   if (!resolved.ok()) result->message = resolved.message();
   for (const BodyQuality& b : result->bodies) {
-    if (!b.ok && result->ok) {
-      result->ok = false;
-      char line[256];
+    if (b.ok || !result->ok) continue;
+    result->ok = false;
+    char line[512];
+    if (b.ambiguous) {
+      std::snprintf(line, sizeof(line),
+                    "%s is ambiguous: %s = %.4f and %.4f fit the scan about equally well (Eq. 9 "
+                    "loss %.3f mm apart per sample); an attached end effector or more scan "
+                    "coverage would tell them apart",
+                    b.link.c_str(), b.joint.c_str(), result->q[static_cast<size_t>(
+                        model.JointIndex(b.joint))], b.alternative_value, 1e3 * b.ambiguity_margin);
+    } else {
       std::snprintf(line, sizeof(line),
                     "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "
                     "(need %.0f%%), RMS %.2f mm",
                     b.link.c_str(), 100.0 * b.inlier_share, 1e3 * options.joint_icp.final_gate,
                     100.0 * options.min_inlier_share, 1e3 * b.rms);
-      result->message = line;
     }
+    result->message = line;
   }
   return Status::Ok();
 }

@@ -43,12 +43,20 @@ struct RobotFitOptions {
   JointSweepOptions sweep;
   // Per-joint precise ICP.
   WeightedIcpOptions joint_icp = DefaultJointIcp();
+  // Extension: after the chain, each joint is refined once more, parents
+  // first, with its whole subtree (everything it carries) as the ICP source.
+  bool refine_subtrees = true;
+  WeightedIcpOptions subtree_icp = DefaultSubtreeIcp();
   // --weighting=uniform: w_edge = 1 in every stage.
   bool uniform_weights = false;
   // A revolute body is rotationally symmetric about its axis (Sec. 5.2.1)
   // when this share of its samples lies on rings that are at least 3/4
   // covered all around.
   double symmetric_share = 0.9;
+  // A revolute body is treated as symmetric too when its own sweep finds a
+  // runner-up (JointSweepOptions::distinct_revolute away) costing less than
+  // this more per sample than the best [m]: the scan cannot tell them apart.
+  double flat_sweep_loss = 0.0005;
   // Optional base hint: skip the rough base stage and start from this pose.
   bool has_initial_base = false;
   Pose T_world_base_initial = Pose::Identity();
@@ -56,9 +64,17 @@ struct RobotFitOptions {
   // is within the final gate and their RMS is at most max_rms [m].
   double min_inlier_share = 0.5;
   double max_rms = 0.003;
+  // Ambiguity (a link that fits two joint values, like a bare flange half a
+  // turn apart): when the sweep's runner-up costs less than
+  // ambiguity_check_loss more per sample than the best, both are refined
+  // by the ICP; the body is ambiguous (not ok) when their Eq. (9) losses then
+  // differ by less than ambiguity_mean_loss per sample [m].
+  double ambiguity_check_loss = 0.002;
+  double ambiguity_mean_loss = 0.0002;
 
   static WeightedIcpOptions DefaultBaseIcp();
   static WeightedIcpOptions DefaultJointIcp();
+  static WeightedIcpOptions DefaultSubtreeIcp();
   bool IsValid(std::string* error) const;
 };
 
@@ -72,6 +88,11 @@ struct BodyQuality {
   bool symmetric = false;    // the sweep included the child's loss
   double sweep_value = 0.0;  // rough joint value [rad] or [m]
   int icp_iterations = 0;
+  // The other joint value the check above fitted (ambiguity_margin: their
+  // loss difference per sample [m]; infinity when not checked).
+  bool ambiguous = false;
+  double alternative_value = 0.0;
+  double ambiguity_margin = 0.0;
   bool ok = false;
 };
 
