@@ -238,12 +238,12 @@ int Run() {
           }
         }
         std::printf("| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %.1f s (%.1f, "
-                    "%.1f, %.1f) |\n",
+                    "%.1f+%.1f, %.1f) |\n",
                     c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points),
                     worst, worst_name.c_str(), record.failed ? " FAILED" : "",
                     1e3 * record.errors.base_translation, record.errors.base_rotation / kDeg,
                     fit.ok ? "ok" : ("not ok: " + fit.message).c_str(), fit.timings.total,
-                    fit.timings.edges, fit.timings.base_rough + fit.timings.base_precise,
+                    fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise,
                     fit.timings.chain);
         std::fflush(stdout);
         records[weighting].push_back(record);

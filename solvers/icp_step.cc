@@ -8,6 +8,7 @@
 
 #include "costs/axis_point_cost.h"
 #include "costs/point_to_line_cost.h"
+#include "costs/joint_point_to_plane_cost.h"
 #include "costs/point_to_plane_cost.h"
 #include "costs/point_to_plane_penalty_cost.h"
 #include "costs/point_to_point_cost.h"
@@ -83,24 +84,34 @@ bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* 
     const Eigen::Vector3d q_world = scan.PointWorld(cell);
     const double w_edge = options.uniform_weights ? 1.0 : static_cast<double>(m.weight);
     total_weight += w_edge;
+    // The target normal (point_to_plane), when the edge stage has one.
+    bool has_normal = false;
+    Eigen::Vector3d n_world;
+    if (options.point_to_plane) {
+      const Eigen::Vector3f& n_scanner = (*input.normals_scanner)[static_cast<size_t>(m.scan)][cell];
+      has_normal = !std::isnan(n_scanner.x());
+      if (has_normal) n_world = scan.T_world_scanner().linear() * n_scanner.cast<double>();
+    }
     if (joint_space) {
-      ceres::CostFunction* cost =
-          motion.type == LinkMotion::Type::kRevolute
-              ? RevolutePointCost::Create(motion.T_world_joint, Pose::Identity(),
-                                          motion.axis_joint, p_link, q_world, w_edge)
-              : PrismaticPointCost::Create(motion.T_world_joint, Pose::Identity(),
-                                           motion.axis_joint, p_link, q_world, w_edge);
+      ceres::CostFunction* cost = nullptr;
+      if (motion.type == LinkMotion::Type::kRevolute) {
+        const RevolutePointCost point(motion.T_world_joint, Pose::Identity(), motion.axis_joint,
+                                      p_link, q_world, w_edge);
+        cost = has_normal ? JointPointToPlaneCost<RevolutePointCost>::Create(point, n_world)
+                          : new ceres::AutoDiffCostFunction<RevolutePointCost, 3, 1>(
+                                new RevolutePointCost(point));
+      } else {
+        const PrismaticPointCost point(motion.T_world_joint, Pose::Identity(), motion.axis_joint,
+                                       p_link, q_world, w_edge);
+        cost = has_normal ? JointPointToPlaneCost<PrismaticPointCost>::Create(point, n_world)
+                          : new ceres::AutoDiffCostFunction<PrismaticPointCost, 3, 1>(
+                                new PrismaticPointCost(point));
+      }
       problem.AddResidualBlock(cost, input.loss, &parameters->q);
       continue;
     }
-    ceres::CostFunction* cost = nullptr;
-    if (options.point_to_plane) {
-      const Eigen::Vector3f& n_scanner = (*input.normals_scanner)[static_cast<size_t>(m.scan)][cell];
-      if (!std::isnan(n_scanner.x())) {
-        const Eigen::Vector3d n_world = scan.T_world_scanner().linear() * n_scanner.cast<double>();
-        cost = PointToPlaneCost::Create(p_link, q_world, n_world, w_edge);
-      }
-    }
+    ceres::CostFunction* cost =
+        has_normal ? PointToPlaneCost::Create(p_link, q_world, n_world, w_edge) : nullptr;
     if (cost == nullptr) cost = PointToPointCost::Create(p_link, q_world, w_edge);
     problem.AddResidualBlock(cost, input.loss, parameters->rotation_world_link,
                              parameters->translation_world_link);

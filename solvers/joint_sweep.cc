@@ -2,9 +2,10 @@
 
 #include <glog/logging.h>
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -30,17 +31,19 @@ bool JointSweepOptions::IsValid(std::string* error) const {
   return true;
 }
 
-JointSweep::JointSweep(CorrespondenceSearch* search, const ScanVisibility* visibility)
-    : search_(search), visibility_(visibility) {
-  CHECK(search_ != nullptr && visibility_ != nullptr);
+JointSweep::JointSweep(const LatticeSearch* lattice, const ScanVisibility* visibility)
+    : lattice_(lattice), visibility_(visibility) {
+  CHECK(lattice_ != nullptr && visibility_ != nullptr);
 }
 
 double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_link,
-                          const JointSweepOptions& options) {
+                          const JointSweepOptions& options) const {
   const Eigen::Matrix3d R = T_world_link.linear();
   const Eigen::Vector3d& t = T_world_link.translation();
   const bool have_normals = samples.normals.size() == samples.points.size();
-  q_world_.clear();
+  const float max_d2 = static_cast<float>(options.max_distance * options.max_distance);
+  // A seen sample without a scan point within max_distance: D = max_distance, w = 1.
+  const double unmatched = SweepLoss(options.max_distance, 1.0, options.tau_dist);
   double loss = 0.0;
   for (size_t i = 0; i < samples.points.size(); ++i) {
     const Eigen::Vector3d p = R * samples.points[i].cast<double>() + t;
@@ -51,17 +54,11 @@ double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_lin
         continue;
       }
     }
-    q_world_.push_back(p.cast<float>());
-  }
-  CorrespondenceOptions correspondence;
-  correspondence.max_distance = options.max_distance;
-  correspondence.window = options.lattice_window;
-  correspondence.use_lattice = true;
-  search_->Find(q_world_, Eigen::AlignedBox3d(), correspondence, &matches_);
-  // Unmatched seen samples: D = max_distance with weight 1.
-  loss += static_cast<double>(q_world_.size() - matches_.size()) *
-          SweepLoss(options.max_distance, 1.0, options.tau_dist);
-  for (const Correspondence& m : matches_) {
+    const Correspondence m = lattice_->Nearest(p.cast<float>(), options.lattice_window, max_d2);
+    if (m.scan < 0) {
+      loss += unmatched;
+      continue;
+    }
     const double w = options.uniform_weights ? 1.0 : std::max(1.0, static_cast<double>(m.weight));
     loss += SweepLoss(static_cast<double>(m.distance), w, options.tau_dist);
   }
@@ -69,7 +66,7 @@ double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_lin
 }
 
 Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion,
-                         const JointSweepOptions& options, JointSweepSummary* summary) {
+                         const JointSweepOptions& options, JointSweepSummary* summary) const {
   CHECK(summary != nullptr);
   const auto start = std::chrono::steady_clock::now();
   std::string error;
@@ -85,29 +82,40 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
     upper = M_PI;
   }
   const double coarse = revolute ? options.revolute_step : options.prismatic_step;
-  auto evaluate = [&](double q) {
-    ++summary->evaluations;
-    return Loss(samples, motion, q, options);
+  // Losses of several joint values, in parallel: each is a serial sum, so
+  // the result does not depend on the thread count.
+  auto evaluate_all = [&](const std::vector<double>& q, std::vector<double>* loss) {
+    loss->resize(q.size());
+    const int64_t n = static_cast<int64_t>(q.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int64_t k = 0; k < n; ++k) {
+      (*loss)[static_cast<size_t>(k)] = Loss(samples, motion, q[static_cast<size_t>(k)], options);
+    }
+    summary->evaluations += static_cast<int>(n);
   };
   // The coarse profile over the whole range.
   std::vector<double> qs, losses;
   const int steps = static_cast<int>(std::floor((upper - lower) / coarse + 1e-9));
   for (int k = 0; k <= steps; ++k) qs.push_back(lower + k * coarse);
   if (qs.back() < upper - 1e-12) qs.push_back(upper);
-  for (const double q : qs) losses.push_back(evaluate(q));
+  evaluate_all(qs, &losses);
   // Coarse to fine around a start: +/- one step at a tenth of it.
   auto refine = [&](double q, double loss, double* best_q, double* best_loss) {
     double step = coarse;
+    std::vector<double> candidates, candidate_losses;
     for (int r = 0; r < options.refinements; ++r) {
-      const double centre = q;
       const double fine = step / 10.0;
+      candidates.clear();
       for (int k = -10; k <= 10; ++k) {
-        const double candidate = centre + k * fine;
+        const double candidate = q + k * fine;
         if (k == 0 || (motion.has_limits && (candidate < lower || candidate > upper))) continue;
-        const double l = evaluate(candidate);
-        if (l < loss) {
-          loss = l;
-          q = candidate;
+        candidates.push_back(candidate);
+      }
+      evaluate_all(candidates, &candidate_losses);
+      for (size_t k = 0; k < candidates.size(); ++k) {  // in order: the first of equals wins
+        if (candidate_losses[k] < loss) {
+          loss = candidate_losses[k];
+          q = candidates[k];
         }
       }
       step = fine;

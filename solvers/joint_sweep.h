@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "edgefit/core/status.h"
-#include "edgefit/correspondence/correspondence_search.h"
+#include "edgefit/correspondence/lattice_search.h"
 #include "edgefit/model/surface_sampler.h"
 #include "solvers/link_motion.h"
 #include "solvers/scan_visibility.h"
@@ -74,28 +74,28 @@ struct JointSweepSummary {
 
 class JointSweep {
  public:
-  // Borrowed; `search` must use the lattice (organized scans).
-  JointSweep(CorrespondenceSearch* search, const ScanVisibility* visibility);
+  // Borrowed: the scans' lattice search (organized scans) and visibility.
+  JointSweep(const LatticeSearch* lattice, const ScanVisibility* visibility);
 
   // The total loss of `samples` (link frame, with normals) with the link at
   // T_world_link; Loss at a joint value of `motion`. LossAt also scores
-  // free-link hypotheses (the base candidates of robot_fit).
+  // free-link hypotheses (the base candidates of robot_fit). Thread-safe.
   double LossAt(const SurfaceSamples& samples, const Pose& T_world_link,
-                const JointSweepOptions& options);
+                const JointSweepOptions& options) const;
   double Loss(const SurfaceSamples& samples, const LinkMotion& motion, double q,
-              const JointSweepOptions& options) {
+              const JointSweepOptions& options) const {
     return LossAt(samples, motion.PoseAt(q), options);
   }
   // Sweeps motion's range (a continuous joint: one turn) and returns the best
-  // value and the runner-up. Fails on invalid options, a free motion or no samples.
+  // value and the runner-up; joint values are scored in parallel (OpenMP),
+  // the result is the same for any thread count. Fails on invalid options,
+  // a free motion or no samples.
   Status Sweep(const SurfaceSamples& samples, const LinkMotion& motion,
-               const JointSweepOptions& options, JointSweepSummary* summary);
+               const JointSweepOptions& options, JointSweepSummary* summary) const;
 
  private:
-  CorrespondenceSearch* search_;
+  const LatticeSearch* lattice_;
   const ScanVisibility* visibility_;
-  std::vector<Eigen::Vector3f> q_world_;
-  std::vector<Correspondence> matches_;
 };
 
 }  // namespace edgefit

@@ -150,10 +150,6 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
     return Status::Error("weighted ICP: point_to_plane needs target normals");
   }
   const bool joint_space = SolvesJointValue(motion, options);
-  if (options.point_to_plane && joint_space) {
-    return Status::Error(
-        "weighted ICP: point_to_plane needs the pose_penalty parameterisation on a joint");
-  }
   std::unique_ptr<ceres::LossFunction> loss;
   EDGEFIT_RETURN_IF_ERROR(MakeLoss(options.loss, options.loss_scale, &loss));
 

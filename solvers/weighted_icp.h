@@ -75,7 +75,8 @@ struct WeightedIcpOptions {
   double loss_scale = 0.005;
   // Point-to-plane data residuals using the target normals given to the
   // engine (from the edge stage); cells without a normal fall back to
-  // point-to-point. The 6-DoF residuals only: not with kJointSpace.
+  // point-to-point. Both parameterisations (joint_point_to_plane_cost.h in
+  // joint space).
   bool point_to_plane = false;
   // Constraint of links on joints (ignored for LinkMotion::kFree).
   JointParameterization parameterization = JointParameterization::kJointSpace;
@@ -164,7 +165,7 @@ class WeightedIcp {
   // `motion`. The initial estimate is state->T_world_link for
   // a free link and state->q (clamped into the limits) on a joint; on return
   // both hold the result. Errors (state unchanged): invalid options, no
-  // samples, point_to_plane without normals or with kJointSpace on a joint.
+  // samples, point_to_plane without normals.
   // A fit that stops early is no error: see summary->stop_reason.
   Status Fit(const SurfaceSamples& samples, const LinkMotion& motion,
              const WeightedIcpOptions& options, LinkState* state,

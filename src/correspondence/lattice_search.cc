@@ -24,62 +24,68 @@ LatticeSearch::LatticeSearch(const ScanSet* scans, const CellWeights* weights)
   }
 }
 
+Correspondence LatticeSearch::Nearest(const Eigen::Vector3f& q_world, int window,
+                                      float max_d2) const {
+  const Eigen::Vector4d q_h(q_world.x(), q_world.y(), q_world.z(), 1.0);
+  float best_d2 = std::numeric_limits<float>::infinity();
+  int best_scan = -1, best_cell = -1;
+  const std::vector<OrganizedScan>& scans = scans_->scans;
+  for (size_t s = 0; s < scans.size(); ++s) {
+    if (!searchable_[s]) continue;
+    const OrganizedScan& scan = scans[s];
+    const Eigen::Vector3d q_scanner = T_scanner_world_[s] * q_h;
+    int row, col;
+    // Outside the angular window (or at the origin): this scan cannot
+    // have seen anything along the query's ray.
+    if (!scan.lattice().ProjectToCell(q_scanner, &row, &col)) continue;
+    const Eigen::Vector3f qf = q_scanner.cast<float>();
+    const int rows = scan.rows(), cols = scan.cols();
+    const bool wrap = scan.lattice().full_circle();
+    const int r0 = std::max(0, row - window), r1 = std::min(rows - 1, row + window);
+    for (int dc = -window; dc <= window; ++dc) {
+      int c = col + dc;
+      if (c < 0 || c >= cols) {
+        if (!wrap) continue;
+        c = ((c % cols) + cols) % cols;  // column cols-1 neighbours column 0
+      }
+      const size_t base = static_cast<size_t>(c) * static_cast<size_t>(rows);
+      for (int r = r0; r <= r1; ++r) {
+        const size_t cell = base + static_cast<size_t>(r);
+        // A missing cell is NaN, so d2 is NaN and both tests are false.
+        const float d2 = (scan.point_scanner(cell) - qf).squaredNorm();
+        if (d2 < best_d2 || (d2 == best_d2 && static_cast<int>(s) == best_scan &&
+                             static_cast<int>(cell) < best_cell)) {
+          best_d2 = d2;
+          best_scan = static_cast<int>(s);
+          best_cell = static_cast<int>(cell);
+        }
+      }
+    }
+  }
+  Correspondence b;
+  b.scan = best_d2 <= max_d2 ? best_scan : -1;
+  b.cell = best_cell;
+  b.distance = std::sqrt(best_d2);
+  b.weight = (b.scan >= 0 && weights_ != nullptr)
+                 ? (*weights_)[static_cast<size_t>(best_scan)][static_cast<size_t>(best_cell)]
+                 : 1.f;
+  return b;
+}
+
 void LatticeSearch::Find(const std::vector<Eigen::Vector3f>& q_world,
                          const CorrespondenceOptions& options, std::vector<Correspondence>* out) {
   CHECK(out != nullptr);
   std::string error;
   CHECK(options.IsValid(&error)) << error;
   const int64_t n = static_cast<int64_t>(q_world.size());
-  const int w = options.window;
   const float max_d2 = static_cast<float>(options.max_distance * options.max_distance);
   best_.resize(q_world.size());
-  const std::vector<OrganizedScan>& scans = scans_->scans;
 
 #pragma omp parallel for schedule(dynamic, 512)
   for (int64_t i = 0; i < n; ++i) {
-    const Eigen::Vector4d q_h(q_world[i].x(), q_world[i].y(), q_world[i].z(), 1.0);
-    float best_d2 = std::numeric_limits<float>::infinity();
-    int best_scan = -1, best_cell = -1;
-    for (size_t s = 0; s < scans.size(); ++s) {
-      if (!searchable_[s]) continue;
-      const OrganizedScan& scan = scans[s];
-      const Eigen::Vector3d q_scanner = T_scanner_world_[s] * q_h;
-      int row, col;
-      // Outside the angular window (or at the origin): this scan cannot
-      // have seen anything along the query's ray.
-      if (!scan.lattice().ProjectToCell(q_scanner, &row, &col)) continue;
-      const Eigen::Vector3f qf = q_scanner.cast<float>();
-      const int rows = scan.rows(), cols = scan.cols();
-      const bool wrap = scan.lattice().full_circle();
-      const int r0 = std::max(0, row - w), r1 = std::min(rows - 1, row + w);
-      for (int dc = -w; dc <= w; ++dc) {
-        int c = col + dc;
-        if (c < 0 || c >= cols) {
-          if (!wrap) continue;
-          c = ((c % cols) + cols) % cols;  // column cols-1 neighbours column 0
-        }
-        const size_t base = static_cast<size_t>(c) * static_cast<size_t>(rows);
-        for (int r = r0; r <= r1; ++r) {
-          const size_t cell = base + static_cast<size_t>(r);
-          // A missing cell is NaN, so d2 is NaN and both tests are false.
-          const float d2 = (scan.point_scanner(cell) - qf).squaredNorm();
-          if (d2 < best_d2 || (d2 == best_d2 && static_cast<int>(s) == best_scan &&
-                               static_cast<int>(cell) < best_cell)) {
-            best_d2 = d2;
-            best_scan = static_cast<int>(s);
-            best_cell = static_cast<int>(cell);
-          }
-        }
-      }
-    }
     Correspondence& b = best_[static_cast<size_t>(i)];
+    b = Nearest(q_world[static_cast<size_t>(i)], options.window, max_d2);
     b.source = static_cast<int>(i);
-    b.scan = best_d2 <= max_d2 ? best_scan : -1;
-    b.cell = best_cell;
-    b.distance = std::sqrt(best_d2);
-    b.weight = (b.scan >= 0 && weights_ != nullptr)
-                   ? (*weights_)[static_cast<size_t>(best_scan)][static_cast<size_t>(best_cell)]
-                   : 1.f;
   }
 
   // Serial compaction keeps source order whatever the schedule.

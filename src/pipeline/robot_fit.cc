@@ -20,6 +20,7 @@ WeightedIcpOptions RobotFitOptions::DefaultBaseIcp() {
   WeightedIcpOptions options;
   options.correspondence.max_distance = 0.05;  // the rough stage's error
   options.max_iterations = 60;
+  options.point_to_plane = true;
   return options;
 }
 
@@ -27,6 +28,7 @@ WeightedIcpOptions RobotFitOptions::DefaultJointIcp() {
   WeightedIcpOptions options;
   options.correspondence.max_distance = 0.03;
   options.max_iterations = 60;
+  options.point_to_plane = true;
   return options;
 }
 
@@ -34,6 +36,7 @@ WeightedIcpOptions RobotFitOptions::DefaultSubtreeIcp() {
   WeightedIcpOptions options;
   options.correspondence.max_distance = 0.01;  // starts at the chain's fit
   options.max_iterations = 30;
+  options.point_to_plane = true;
   return options;
 }
 
@@ -103,7 +106,7 @@ class ChainFitter {
   ChainFitter(const KinematicModel& model, const RobotFitOptions& options,
               const std::vector<SurfaceSamples>& icp_samples,
               const std::vector<SurfaceSamples>& sweep_samples, WeightedIcp* icp,
-              JointSweep* sweep, std::function<void(const std::string&)> say)
+              const JointSweep* sweep, std::function<void(const std::string&)> say)
       : model_(model),
         options_(options),
         icp_samples_(icp_samples),
@@ -159,13 +162,14 @@ class ChainFitter {
       LinkState state;
       state.q = before;
       WeightedIcpSummary summary;
-      EDGEFIT_RETURN_IF_ERROR(icp_->Fit(subtree_icp, motion, subtree_icp_, &state, &summary));
+      const WeightedIcpOptions icp_options = ForMotion(subtree_icp_, motion);
+      EDGEFIT_RETURN_IF_ERROR(icp_->Fit(subtree_icp, motion, icp_options, &state, &summary));
       if (record.sweep_margin < options_.ambiguity_check_loss && !subtree_sweep.points.empty()) {
         LinkState other;
         other.q = state.q + (record.sweep.runner_up_q - record.sweep.q);
         WeightedIcpSummary other_summary;
         EDGEFIT_RETURN_IF_ERROR(
-            icp_->Fit(subtree_icp, motion, subtree_icp_, &other, &other_summary));
+            icp_->Fit(subtree_icp, motion, icp_options, &other, &other_summary));
         const double loss = sweep_->Loss(subtree_sweep, motion, state.q, sweep_options_);
         const double other_loss = sweep_->Loss(subtree_sweep, motion, other.q, sweep_options_);
         if (other_loss < loss) {
@@ -189,6 +193,14 @@ class ChainFitter {
   }
 
  private:
+  // Prismatic joints keep point-to-point residuals: a part sliding along
+  // its axis (a gun's jaw) shows few faces across the axis, and
+  // point-to-plane leaves it free to slide.
+  static WeightedIcpOptions ForMotion(WeightedIcpOptions options, const LinkMotion& motion) {
+    if (motion.type == LinkMotion::Type::kPrismatic) options.point_to_plane = false;
+    return options;
+  }
+
   static std::string Describe(const JointRecord& record) {
     if (!std::isfinite(record.margin)) return "";
     char text[128];
@@ -252,14 +264,16 @@ class ChainFitter {
     LinkState state;
     state.q = record->sweep.q;
     WeightedIcpSummary summary;
-    EDGEFIT_RETURN_IF_ERROR(icp_->Fit(body_icp, motion, joint_icp_, &state, &summary));
+    EDGEFIT_RETURN_IF_ERROR(
+        icp_->Fit(body_icp, motion, ForMotion(joint_icp_, motion), &state, &summary));
     record->icp_iterations = summary.iterations;
     (*q)[static_cast<size_t>(record->joint)] = NearestZeroTurn(motion, state.q);
     (void)model_.ResolveDependentJoints(q);
     char line[320];
-    std::snprintf(line, sizeof(line), "chain: %s = %.5f (sweep %.4f%s; runner-up %.3f mm/sample worse), %s",
+    std::snprintf(line, sizeof(line),
+                  "chain: %s = %.5f (sweep %.4f in %.2f s%s; runner-up %.3f mm/sample worse), %s",
                   j.name.c_str(), (*q)[static_cast<size_t>(record->joint)], record->sweep.q,
-                  record->symmetric ? ", symmetric: children added" : "",
+                  record->sweep.seconds, record->symmetric ? ", symmetric: children added" : "",
                   1e3 * record->sweep_margin, summary.BriefReport().c_str());
     say_(line);
     return Status::Ok();
@@ -270,7 +284,7 @@ class ChainFitter {
   const std::vector<SurfaceSamples>& icp_samples_;
   const std::vector<SurfaceSamples>& sweep_samples_;
   WeightedIcp* icp_;
-  JointSweep* sweep_;
+  const JointSweep* sweep_;
   std::function<void(const std::string&)> say_;
   WeightedIcpOptions joint_icp_, subtree_icp_;
   JointSweepOptions sweep_options_;
@@ -309,7 +323,7 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
   CorrespondenceSearch search(&scans, weights);
   const ScanVisibility visibility(&scans);
   WeightedIcp icp(&scans, &search, &edges.normals);
-  JointSweep sweep(&search, &visibility);
+  const JointSweep sweep(&search.lattice(), &visibility);
   WeightedIcpOptions base_icp = options.base_icp, joint_icp = options.joint_icp;
   JointSweepOptions sweep_options = options.sweep;
   base_icp.uniform_weights = joint_icp.uniform_weights = sweep_options.uniform_weights =

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "costs/axis_point_cost.h"
+#include "costs/joint_point_to_plane_cost.h"
 #include "costs/point_to_line_cost.h"
 #include "costs/point_to_plane_cost.h"
 #include "costs/point_to_plane_penalty_cost.h"
@@ -159,6 +160,28 @@ std::vector<FunctorCase> AllFunctors() {
                  PrismaticPointCost::Create(T_wp, T_pj, axis, p, q, w)),
              Numeric<PrismaticPointCost, 3, 1>(new PrismaticPointCost(T_wp, T_pj, axis, p, q, w)),
              {{d}}};
+       }},
+      {"RevolutePointToPlane",
+       [weight](std::mt19937& rng) mutable {
+         const Eigen::Isometry3d T_wp = RandomPose(rng), T_pj = RandomPose(rng);
+         const Vector3d axis = RandomVector(rng, 1.0), p = RandomVector(rng, 1.0);
+         const Vector3d q = RandomVector(rng, 3.0), n = RandomVector(rng, 1.0);
+         const RevolutePointCost point(T_wp, T_pj, axis, p, q, weight(rng));
+         using Cost = JointPointToPlaneCost<RevolutePointCost>;
+         return Instance{std::unique_ptr<ceres::CostFunction>(Cost::Create(point, n)),
+                         Numeric<Cost, 1, 1>(new Cost(point, n)),
+                         {{std::uniform_real_distribution<double>(-kPi, kPi)(rng)}}};
+       }},
+      {"PrismaticPointToPlane",
+       [weight](std::mt19937& rng) mutable {
+         const Eigen::Isometry3d T_wp = RandomPose(rng), T_pj = RandomPose(rng);
+         const Vector3d axis = RandomVector(rng, 1.0), p = RandomVector(rng, 1.0);
+         const Vector3d q = RandomVector(rng, 3.0), n = RandomVector(rng, 1.0);
+         const PrismaticPointCost point(T_wp, T_pj, axis, p, q, weight(rng));
+         using Cost = JointPointToPlaneCost<PrismaticPointCost>;
+         return Instance{std::unique_ptr<ceres::CostFunction>(Cost::Create(point, n)),
+                         Numeric<Cost, 1, 1>(new Cost(point, n)),
+                         {{std::uniform_real_distribution<double>(-1.0, 1.0)(rng)}}};
        }},
   };
 }

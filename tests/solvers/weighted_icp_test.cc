@@ -224,6 +224,36 @@ TEST(WeightedIcpTest, PointToPlaneRecoversFreePose) {
   EXPECT_LT(RotationErrorRad(state.T_world_link, kTrueFreePose), 1e-6);
 }
 
+// Joint-space point-to-plane (joint_point_to_plane_cost.h) with the true
+// target normals recovers revolute and prismatic joints exactly, in fewer
+// iterations than point-to-point.
+TEST(WeightedIcpTest, PointToPlaneRecoversJoints) {
+  for (const LinkMotion::Type type : {LinkMotion::Type::kRevolute, LinkMotion::Type::kPrismatic}) {
+    const LinkMotion motion = TestJoint(type);
+    const bool revolute = type == LinkMotion::Type::kRevolute;
+    const double q_true = revolute ? 1.2 : 0.21;
+    const Pose T_true = motion.PoseAt(q_true);
+    const Synthetic s = MakeSynthetic(T_true, 0.0);
+    std::vector<std::vector<Eigen::Vector3f>> normals(1);
+    for (const Eigen::Vector3f& n : s.samples.normals) {
+      normals[0].push_back((T_true.linear() * n.cast<double>()).cast<float>());
+    }
+    CorrespondenceSearch search(&s.scans, &s.weights);
+    WeightedIcp icp(&s.scans, &search, &normals);
+    WeightedIcpOptions options = KdTreeOptions();
+    LinkState point_state, plane_state;
+    point_state.q = plane_state.q = q_true + (revolute ? 4.0 * kDeg : 0.03);
+    WeightedIcpSummary point, plane;
+    ASSERT_TRUE(icp.Fit(s.samples, motion, options, &point_state, &point).ok());
+    options.point_to_plane = true;
+    ASSERT_TRUE(icp.Fit(s.samples, motion, options, &plane_state, &plane).ok());
+    EXPECT_EQ(plane.stop_reason, IcpStopReason::kConverged) << plane.BriefReport();
+    EXPECT_NEAR(plane_state.q, q_true, 1e-6);
+    EXPECT_LE(plane.iterations, point.iterations)
+        << "point-to-plane " << plane.BriefReport() << " vs " << point.BriefReport();
+  }
+}
+
 TEST(WeightedIcpTest, StopsWhenTheScanIsElsewhere) {
   const Synthetic s = MakeSynthetic(kTrueFreePose, 0.0);
   LinkState state;

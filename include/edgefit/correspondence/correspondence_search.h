@@ -28,6 +28,9 @@ class CorrespondenceSearch {
   void Find(const std::vector<Eigen::Vector3f>& q_world, const Eigen::AlignedBox3d& crop_world,
             const CorrespondenceOptions& options, std::vector<Correspondence>* out);
 
+  // The lattice searcher, for per-query use (LatticeSearch::Nearest).
+  const LatticeSearch& lattice() const { return lattice_; }
+
  private:
   LatticeSearch lattice_;
   KdTreeSearch kdtree_;

@@ -42,6 +42,10 @@ class LatticeSearch {
   void Find(const std::vector<Eigen::Vector3f>& q_world, const CorrespondenceOptions& options,
             std::vector<Correspondence>* out);
 
+  // One query: its nearest cell within `window`, gated by max_d2 = squared
+  // max_distance [m^2] (scan = -1 beyond; source left 0). Thread-safe.
+  Correspondence Nearest(const Eigen::Vector3f& q_world, int window, float max_d2) const;
+
  private:
   const ScanSet* scans_;
   const CellWeights* weights_;
