@@ -189,7 +189,8 @@ int Run() {
     CHECK(accessories == "with" || accessories == "without") << accessories;
     std::map<std::string, std::vector<FitRecord>> records;  // by weighting
     std::printf("\n## %s accessories\n\n| case | weighting | points | max joint error | base "
-                "| ok | time (edges, base, chain) |\n|---|---|---|---|---|---|---|\n",
+                "| ok | weakest body (inliers, RMS) | time (edges, base rough+precise, chain) "
+                "|\n|---|---|---|---|---|---|---|---|\n",
                 accessories.c_str());
     const std::vector<std::string> only = Split(FLAGS_only);
     for (const Case& c : cases) {
@@ -237,12 +238,18 @@ int Run() {
                 << fit.ok << ',' << fit.timings.total << '\n';
           }
         }
-        std::printf("| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %.1f s (%.1f, "
+        const BodyQuality* weakest = nullptr;
+        for (const BodyQuality& b : fit.bodies) {
+          if (weakest == nullptr || b.inlier_share < weakest->inlier_share) weakest = &b;
+        }
+        std::printf("| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %.0f%% %s, %.2f mm | %.1f s (%.1f, "
                     "%.1f+%.1f, %.1f) |\n",
                     c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points),
                     worst, worst_name.c_str(), record.failed ? " FAILED" : "",
                     1e3 * record.errors.base_translation, record.errors.base_rotation / kDeg,
-                    fit.ok ? "ok" : ("not ok: " + fit.message).c_str(), fit.timings.total,
+                    fit.ok ? "ok" : ("not ok: " + fit.message).c_str(),
+                    100.0 * weakest->inlier_share, weakest->link.c_str(), 1e3 * weakest->rms,
+                    fit.timings.total,
                     fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise,
                     fit.timings.chain);
         std::fflush(stdout);

@@ -20,3 +20,7 @@ DEFINE_string(truth, "",
               "Ground truth JSON of a virtual scan (joints, T_world_base, scanners, settings). "
               "scan: written; fit: read, to print truth against fit and add \"errors\" to "
               "result.json.");
+DEFINE_string(out_ply, "",
+              "Optional PLY output. edges: the valid points coloured by weight (red: w_high, "
+              "orange: candidates dropped by region growing, grey: others); fit: the fitted "
+              "model's meshes in the world frame.");

@@ -15,5 +15,6 @@ DECLARE_double(w_high);
 DECLARE_string(labels);
 DECLARE_string(out);
 DECLARE_string(truth);
+DECLARE_string(out_ply);
 
 #endif  // EDGEFIT_TOOLS_COMMON_FLAGS_H_

@@ -3,7 +3,8 @@
 //   edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json
 //               [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]
 //               [--init=x,y,yaw_deg] [--truth=T.json] [--out_joint_states=J.yaml]
-//               [--out_urdf=U.urdf] [--threads=N] [--seed=N]
+//               [--out_urdf=U.urdf] [--out_ply=M.ply] [--out_background=B.ptx]
+//               [--threads=N] [--seed=N]
 #include <omp.h>
 
 #include <chrono>
@@ -18,7 +19,9 @@
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
+#include "edgefit/model/mesh_ply.h"
 #include "edgefit/pipeline/fit_errors.h"
+#include "edgefit/pipeline/model_points.h"
 #include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/truth.h"
 
@@ -37,6 +40,12 @@ DEFINE_string(out_joint_states, "", "Optional output: joint values as YAML, ROS 
                                     "layout (name, position).");
 DEFINE_string(out_urdf, "", "Optional output: the model with a world link and a fixed joint at "
                             "the fitted base pose (joint values in a comment).");
+
+DEFINE_string(out_background, "",
+              "Optional output: the scan with the fitted model's points removed (.ptx, .pcd or "
+              ".ply): the scanned equipment is replaced by its model.");
+DEFINE_double(background_distance_mm, 8.0,
+              "--out_background: points within this of the fitted model's surface are removed [mm].");
 
 namespace edgefit::tools {
 namespace {
@@ -60,13 +69,15 @@ Status OptionsFromFlags(RobotFitOptions* options) {
     return Status::Error("--weighting must be edge or uniform, not '" + FLAGS_weighting + "'");
   }
   options->uniform_weights = FLAGS_weighting == "uniform";
-  for (WeightedIcpOptions* icp : {&options->base_icp, &options->joint_icp}) {
+  for (WeightedIcpOptions* icp : {&options->base_icp, &options->joint_icp, &options->subtree_icp}) {
     icp->loss = FLAGS_loss;
     icp->loss_scale = FLAGS_loss_scale_mm * 1e-3;
     icp->lambda = FLAGS_lambda;
   }
   EDGEFIT_RETURN_IF_ERROR(
       ParseJointParameterization(FLAGS_parameterization, &options->joint_icp.parameterization));
+  options->subtree_icp.parameterization = options->joint_icp.parameterization;
+  if (!(FLAGS_background_distance_mm > 0.0)) return Status::Error("--background_distance_mm must be > 0");
   if (!FLAGS_init.empty()) {
     options->has_initial_base = true;
     double x = 0.0, y = 0.0, yaw = 0.0;
@@ -230,6 +241,33 @@ int RunFit(const Command& command) {
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_urdf);
   }
+  if (!FLAGS_out_ply.empty()) {
+    const std::vector<Pose> T_world_link = model.ForwardKinematics(fit.q, fit.T_world_base);
+    TriangleMesh mesh;
+    for (size_t l = 0; l < model.links().size(); ++l) mesh.Append(model.links()[l].mesh, T_world_link[l]);
+    const Status status =
+        WriteMeshPly(FLAGS_out_ply, mesh, "edgefit fit: " + FLAGS_urdf + " at the fitted pose, world frame");
+    if (!status.ok()) return fail(status);
+    written.push_back(FLAGS_out_ply);
+  }
+  if (!FLAGS_out_background.empty()) {
+    Progress("background: removing the fitted model's points");
+    ModelPointsOptions background;
+    background.distance = FLAGS_background_distance_mm * 1e-3;
+    std::vector<std::vector<uint8_t>> marks;
+    Status status = MarkModelPoints(scans, model, fit.q, fit.T_world_base, background, &marks);
+    if (!status.ok()) return fail(status);
+    const size_t before = scans.TotalValid();
+    const size_t removed = RemoveMarkedPoints(marks, &scans);
+    status = WriteScans(FLAGS_out_background, scans, WriteOptions());
+    if (!status.ok()) return fail(status);
+    written.push_back(FLAGS_out_background);
+    result["background"] = {{"removed_points", removed},
+                            {"kept_points", before - removed},
+                            {"distance_m", background.distance}};
+    std::printf("background: removed %zu of %zu points within %.1f mm of the fitted model\n",
+                removed, before, FLAGS_background_distance_mm);
+  }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result["timing_s"]["total"] = total;
   const Status status = WriteStringAtomically(FLAGS_out, result.dump(2) + "\n");
@@ -277,13 +315,14 @@ Command FitCommand() {
           "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
           "              [--parameterization=joint_space|pose_penalty] [--init=x,y,yaw_deg]\n"
           "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
+          "              [--out_ply=M.ply] [--out_background=B.ptx] [--background_distance_mm=8]\n"
           "              [--threads=N] [--seed=N]\n"
           "Example:\n"
           "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
           "    --scan=robot.ptx --truth=robot_truth.json --out=result.json",
           {"urdf", "attach", "scan", "out", "kind", "weighting", "w_high", "loss", "loss_scale_mm",
-           "lambda", "parameterization", "init", "truth", "out_joint_states", "out_urdf",
-           "threads", "seed"},
+           "lambda", "parameterization", "init", "truth", "out_joint_states", "out_urdf", "out_ply",
+           "out_background", "background_distance_mm", "threads", "seed"},
           &RunFit};
 }
 

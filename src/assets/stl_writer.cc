@@ -5,23 +5,9 @@
 #include <ostream>
 
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/core/little_endian.h"
 
 namespace edgefit {
-namespace {
-
-void AppendUint32(uint32_t value, std::string* out) {
-  for (int byte = 0; byte < 4; ++byte) out->push_back(static_cast<char>((value >> (8 * byte)) & 0xff));
-}
-
-void AppendFloat(float value, std::string* out) {
-  uint32_t bits = 0;
-  static_assert(sizeof(bits) == sizeof(value), "float must be 32-bit");
-  std::memcpy(&bits, &value, sizeof(bits));
-  AppendUint32(bits, out);  // Little-endian IEEE 754 whatever the host order.
-}
-
-}  // namespace
-
 std::string EncodeBinaryStl(const TriangleMesh& mesh, const std::string& solid_name) {
   constexpr size_t kHeaderBytes = 80;
   std::string out;
@@ -29,7 +15,7 @@ std::string EncodeBinaryStl(const TriangleMesh& mesh, const std::string& solid_n
   std::string header = "edgefit procedural mesh: " + solid_name;
   header.resize(kHeaderBytes, '\0');
   out += header;
-  AppendUint32(static_cast<uint32_t>(mesh.triangles.size()), &out);
+  AppendUint32LE(static_cast<uint32_t>(mesh.triangles.size()), &out);
   for (const Eigen::Vector3i& t : mesh.triangles) {
     // The corners as float32, as a reader will see them. Each goes through a
     // volatile so the normal below really uses the rounded values: GCC 12 at
@@ -47,9 +33,9 @@ std::string EncodeBinaryStl(const TriangleMesh& mesh, const std::string& solid_n
     Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
     const double norm = n.norm();
     n = norm > 0.0 ? Eigen::Vector3d(n / norm) : Eigen::Vector3d::Zero();
-    for (int i = 0; i < 3; ++i) AppendFloat(static_cast<float>(n[i]), &out);
+    for (int i = 0; i < 3; ++i) AppendFloatLE(static_cast<float>(n[i]), &out);
     for (const float* corner : corners) {
-      for (int i = 0; i < 3; ++i) AppendFloat(corner[i], &out);
+      for (int i = 0; i < 3; ++i) AppendFloatLE(corner[i], &out);
     }
     out.push_back('\0');  // Attribute byte count: 0.
     out.push_back('\0');

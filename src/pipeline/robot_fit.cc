@@ -2,6 +2,7 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -135,6 +136,16 @@ class ChainFitter {
       record.joint = joint;
       EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &record));
       records->push_back(record);
+    }
+    // A symmetric body was swept with its children at values not fitted
+    // yet: sweep it and every joint after it once more, the children now
+    // near their values (a round wrist, then the flange and the gun).
+    const auto first_symmetric = std::find_if(records->begin(), records->end(),
+                                              [](const JointRecord& r) { return r.symmetric; });
+    if (options_.resweep_after_symmetric) {
+      for (auto it = first_symmetric; it != records->end(); ++it) {
+        EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &*it));
+      }
     }
     return Status::Ok();
   }

@@ -16,6 +16,7 @@
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/pipeline/fit_errors.h"
+#include "edgefit/pipeline/model_points.h"
 #include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/truth.h"
@@ -34,6 +35,7 @@ struct RobotScene {
   std::vector<double> q;
   Pose T_world_base = Pose::Identity();
   ScanSet scans;        // robot, gun, accessories, floor, clutter
+  std::vector<std::vector<uint16_t>> labels;  // of scans, per cell (scene.h)
   ScanSet empty_scans;  // the same place without the robot and its accessories
 };
 
@@ -73,6 +75,7 @@ const RobotScene& GetScene() {
       options.asset_box_world = box;
       VirtualScan scan;
       CHECK(ScanScene(scene, scanners, options, &scan).ok());
+      if (with_robot) out->labels = std::move(scan.labels);
       (with_robot ? out->scans : out->empty_scans) = std::move(scan.scans);
     }
     return out;
@@ -139,6 +142,34 @@ TEST(RobotFitTest, SameResultForAnyThreadCount) {
   omp_set_num_threads(threads);
   EXPECT_TRUE(one.T_world_base.matrix() == two.T_world_base.matrix());
   EXPECT_EQ(one.q, two.q);
+}
+
+// --out_background: the points of the model at its true pose are found
+// (the robot's and the gun's), little else (the floor under the base plate,
+// clamps and harness roots that touch the links).
+TEST(RobotFitTest, ModelPointsAreTheRobotsPoints) {
+  const RobotScene& s = GetScene();
+  std::vector<std::vector<uint8_t>> marks;
+  ASSERT_TRUE(
+      MarkModelPoints(s.scans, s.model, s.q, s.T_world_base, ModelPointsOptions(), &marks).ok());
+  size_t robot = 0, robot_marked = 0, other = 0, other_marked = 0;
+  for (size_t k = 0; k < s.scans.scans.size(); ++k) {
+    for (size_t cell = 0; cell < s.scans.scans[k].size(); ++cell) {
+      if (!s.scans.scans[k].IsValid(cell)) continue;
+      const bool is_robot = IsLinkLabel(s.labels[k][cell]);
+      (is_robot ? robot : other) += 1;
+      (is_robot ? robot_marked : other_marked) += marks[k][cell];
+    }
+  }
+  const double found = static_cast<double>(robot_marked) / static_cast<double>(robot);
+  const double wrong = static_cast<double>(other_marked) / static_cast<double>(other);
+  std::printf("  %zu robot points, %.2f%% found; %zu others, %.3f%% taken\n", robot, 100.0 * found,
+              other, 100.0 * wrong);
+  EXPECT_GT(found, 0.995);
+  EXPECT_LT(wrong, 0.01);
+  ScanSet background = s.scans;
+  EXPECT_EQ(RemoveMarkedPoints(marks, &background), robot_marked + other_marked);
+  EXPECT_EQ(background.TotalValid(), s.scans.TotalValid() - robot_marked - other_marked);
 }
 
 // The wrong input: a scan of the place without the robot must not

@@ -22,7 +22,9 @@ TEST_F(CliTest, FitWritesTheResultContract) {
             0);
   const RunResult r = Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
                           " --out=" + Path("result.json") + " --out_joint_states=" +
-                          Path("j.yaml") + " --out_urdf=" + Path("fitted.urdf"));
+                          Path("j.yaml") + " --out_urdf=" + Path("fitted.urdf") +
+                          " --out_ply=" + Path("model.ply") + " --out_background=" +
+                          Path("background.ptx"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
   EXPECT_EQ(result["kind"], "articulated");
@@ -46,6 +48,21 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   const std::string urdf = Slurp(Path("fitted.urdf"));
   EXPECT_NE(urdf.find("<link name=\"world\"/>"), std::string::npos);
   EXPECT_NE(urdf.find("world_to_base_link"), std::string::npos);
+  const std::string ply = Slurp(Path("model.ply"));
+  EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+  EXPECT_NE(ply.find("element face"), std::string::npos);
+  // The background keeps the scan's layout, without the arm's points.
+  const size_t removed = result["background"]["removed_points"].get<size_t>();
+  EXPECT_GT(removed, 1000u);
+  const RunResult info = Run("info --json --scan=" + Path("background.ptx"));
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const RunResult original = Run("info --json --scan=" + scan);
+  const nlohmann::json kept = nlohmann::json::parse(info.out);
+  const nlohmann::json all = nlohmann::json::parse(original.out);
+  size_t valid = 0, original_valid = 0;
+  for (const auto& s : kept["scans"]) valid += s["valid"].get<size_t>();
+  for (const auto& s : all["scans"]) original_valid += s["valid"].get<size_t>();
+  EXPECT_EQ(valid + removed, original_valid);
 }
 
 TEST_F(CliTest, FitBadInput) {
@@ -62,6 +79,9 @@ TEST_F(CliTest, FitBadInput) {
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --init=1,2", "--init");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --loss=l3", "l3");
   ExpectBadInput("fit --urdf=" + conveyor + " --scan=" + sample + out, "conveyance");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out +
+                     " --background_distance_mm=-1",
+                 "--background_distance_mm");
   EXPECT_FALSE(fs::exists(Path("result.json")));
 }
 

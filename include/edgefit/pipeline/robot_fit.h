@@ -57,12 +57,15 @@ struct RobotFitOptions {
   // runner-up (JointSweepOptions::distinct_revolute away) costing less than
   // this more per sample than the best [m]: the scan cannot tell them apart.
   double flat_sweep_loss = 0.0005;
+  // A symmetric body is swept with its children at values not fitted yet;
+  // when true, it and every joint after it are swept and fitted once more.
+  bool resweep_after_symmetric = true;
   // Optional base hint: skip the rough base stage and start from this pose.
   bool has_initial_base = false;
   Pose T_world_base_initial = Pose::Identity();
   // Quality: a body fits when at least this share of its visible samples
   // is within the final gate and their RMS is at most max_rms [m].
-  double min_inlier_share = 0.5;
+  double min_inlier_share = 0.8;
   double max_rms = 0.003;
   // Ambiguity (a link that fits two joint values, like a bare flange half a
   // turn apart): when the sweep's runner-up costs less than
