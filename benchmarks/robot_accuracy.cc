@@ -148,18 +148,19 @@ void PrintSummary(const std::string& config, const std::vector<FitRecord>& recor
     confident_wrong += r.failed && r.quality_ok;
   }
   std::printf("\n### %s: %zu fits\n\n", config.c_str(), records.size());
-  std::printf("| revolute mean | p95 | max | prismatic mean | max | base mean | base max | "
-              "base rot mean | max | failed | not ok | failed yet ok | mean time |\n");
+  std::printf(
+      "| revolute mean | p95 | max | prismatic mean | max | base mean | base max | "
+      "base rot mean | max | failed | not ok | failed yet ok | mean time |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::printf("| %.4f° | %.4f° | %.4f° | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.4f° | %.4f° | "
-              "%d | %d | %d | %.1f s |\n",
-              Mean(revolute), Percentile(revolute, 0.95),
-              revolute.empty() ? 0.0 : *std::max_element(revolute.begin(), revolute.end()),
-              Mean(prismatic),
-              prismatic.empty() ? 0.0 : *std::max_element(prismatic.begin(), prismatic.end()),
-              Mean(base_t), *std::max_element(base_t.begin(), base_t.end()), Mean(base_r),
-              *std::max_element(base_r.begin(), base_r.end()), failed, not_ok, confident_wrong,
-              Mean(total));
+  std::printf(
+      "| %.4f° | %.4f° | %.4f° | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.4f° | %.4f° | "
+      "%d | %d | %d | %.1f s |\n",
+      Mean(revolute), Percentile(revolute, 0.95),
+      revolute.empty() ? 0.0 : *std::max_element(revolute.begin(), revolute.end()), Mean(prismatic),
+      prismatic.empty() ? 0.0 : *std::max_element(prismatic.begin(), prismatic.end()), Mean(base_t),
+      *std::max_element(base_t.begin(), base_t.end()), Mean(base_r),
+      *std::max_element(base_r.begin(), base_r.end()), failed, not_ok, confident_wrong,
+      Mean(total));
   std::printf("\n| joint | mean | p95 | max |\n|---|---|---|---|\n");
   for (const std::string& name : joint_order) {
     const std::vector<double>& v = per_joint[name];
@@ -188,10 +189,11 @@ int Run() {
   for (const std::string& accessories : Split(FLAGS_accessories)) {
     CHECK(accessories == "with" || accessories == "without") << accessories;
     std::map<std::string, std::vector<FitRecord>> records;  // by weighting
-    std::printf("\n## %s accessories\n\n| case | weighting | points | max joint error | base "
-                "| ok | weakest body (inliers, RMS) | time (edges, base rough+precise, chain) "
-                "|\n|---|---|---|---|---|---|---|---|\n",
-                accessories.c_str());
+    std::printf(
+        "\n## %s accessories\n\n| case | weighting | points | max joint error | base "
+        "| ok | weakest body (inliers, RMS) | time (edges, base rough+precise, chain) "
+        "|\n|---|---|---|---|---|---|---|---|\n",
+        accessories.c_str());
     const std::vector<std::string> only = Split(FLAGS_only);
     for (const Case& c : cases) {
       if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
@@ -210,7 +212,8 @@ int Run() {
         options.uniform_weights = weighting == "uniform";
         RobotFitResult fit;
         ProgressFn progress;
-        if (FLAGS_progress) progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+        if (FLAGS_progress)
+          progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
         status = FitRobot(model, scan.scans, options, progress, &fit);
         CHECK(status.ok()) << c.name << ": " << status.message();
         FitRecord record;
@@ -234,24 +237,24 @@ int Run() {
           }
           if (csv) {
             csv << accessories << ',' << weighting << ',' << c.name << ',' << e.name << ','
-                << e.prismatic << ',' << e.truth << ',' << e.fit << ',' << e.error << ','
-                << fit.ok << ',' << fit.timings.total << '\n';
+                << e.prismatic << ',' << e.truth << ',' << e.fit << ',' << e.error << ',' << fit.ok
+                << ',' << fit.timings.total << '\n';
           }
         }
         const BodyQuality* weakest = nullptr;
         for (const BodyQuality& b : fit.bodies) {
           if (weakest == nullptr || b.inlier_share < weakest->inlier_share) weakest = &b;
         }
-        std::printf("| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %.0f%% %s, %.2f mm | %.1f s (%.1f, "
-                    "%.1f+%.1f, %.1f) |\n",
-                    c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points),
-                    worst, worst_name.c_str(), record.failed ? " FAILED" : "",
-                    1e3 * record.errors.base_translation, record.errors.base_rotation / kDeg,
-                    fit.ok ? "ok" : ("not ok: " + fit.message).c_str(),
-                    100.0 * weakest->inlier_share, weakest->link.c_str(), 1e3 * weakest->rms,
-                    fit.timings.total,
-                    fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise,
-                    fit.timings.chain);
+        std::printf(
+            "| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %.0f%% %s, %.2f mm | %.1f "
+            "s (%.1f, "
+            "%.1f+%.1f, %.1f) |\n",
+            c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points), worst,
+            worst_name.c_str(), record.failed ? " FAILED" : "",
+            1e3 * record.errors.base_translation, record.errors.base_rotation / kDeg,
+            fit.ok ? "ok" : ("not ok: " + fit.message).c_str(), 100.0 * weakest->inlier_share,
+            weakest->link.c_str(), 1e3 * weakest->rms, fit.timings.total, fit.timings.edges,
+            fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain);
         std::fflush(stdout);
         records[weighting].push_back(record);
       }

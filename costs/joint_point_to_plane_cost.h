@@ -36,8 +36,8 @@ class JointPointToPlaneCost {
   bool operator()(const T* const q, T* residual) const {
     T r_point[3];
     if (!point_(q, r_point)) return false;
-    residual[0] = T(n_world_.x()) * r_point[0] + T(n_world_.y()) * r_point[1] +
-                  T(n_world_.z()) * r_point[2];
+    residual[0] =
+        T(n_world_.x()) * r_point[0] + T(n_world_.y()) * r_point[1] + T(n_world_.z()) * r_point[2];
     return true;
   }
 

@@ -88,7 +88,8 @@ bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* 
     bool has_normal = false;
     Eigen::Vector3d n_world;
     if (options.point_to_plane) {
-      const Eigen::Vector3f& n_scanner = (*input.normals_scanner)[static_cast<size_t>(m.scan)][cell];
+      const Eigen::Vector3f& n_scanner =
+          (*input.normals_scanner)[static_cast<size_t>(m.scan)][cell];
       has_normal = !std::isnan(n_scanner.x());
       if (has_normal) n_world = scan.T_world_scanner().linear() * n_scanner.cast<double>();
     }

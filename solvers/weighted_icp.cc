@@ -266,7 +266,9 @@ Status WeightedIcp::Evaluate(const SurfaceSamples& samples, const Pose& T_world_
   summary->source_points = samples.points.size();
   const double gate = std::min(options.final_gate, options.correspondence.max_distance);
   Eigen::AlignedBox3d crop_world;
-  for (const Eigen::Vector3f& p : samples.points) crop_world.extend(T_world_link * p.cast<double>());
+  for (const Eigen::Vector3f& p : samples.points) {
+    crop_world.extend(T_world_link * p.cast<double>());
+  }
   crop_world.min().array() -= gate + options.crop_margin;
   crop_world.max().array() += gate + options.crop_margin;
   Measure(samples, T_world_link, options, gate, crop_world, summary);

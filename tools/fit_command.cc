@@ -244,9 +244,11 @@ int RunFit(const Command& command) {
   if (!FLAGS_out_ply.empty()) {
     const std::vector<Pose> T_world_link = model.ForwardKinematics(fit.q, fit.T_world_base);
     TriangleMesh mesh;
-    for (size_t l = 0; l < model.links().size(); ++l) mesh.Append(model.links()[l].mesh, T_world_link[l]);
-    const Status status =
-        WriteMeshPly(FLAGS_out_ply, mesh, "edgefit fit: " + FLAGS_urdf + " at the fitted pose, world frame");
+    for (size_t l = 0; l < model.links().size(); ++l) {
+      mesh.Append(model.links()[l].mesh, T_world_link[l]);
+    }
+    const Status status = WriteMeshPly(
+        FLAGS_out_ply, mesh, "edgefit fit: " + FLAGS_urdf + " at the fitted pose, world frame");
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_ply);
   }

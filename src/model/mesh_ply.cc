@@ -12,7 +12,8 @@ std::string EncodeMeshPly(const TriangleMesh& mesh, const std::string& comment) 
   if (!comment.empty()) out += "comment " + comment + "\n";
   out += "element vertex " + std::to_string(mesh.vertices.size()) +
          "\nproperty float x\nproperty float y\nproperty float z\n"
-         "element face " + std::to_string(mesh.triangles.size()) +
+         "element face " +
+         std::to_string(mesh.triangles.size()) +
          "\nproperty list uchar int vertex_indices\nend_header\n";
   out.reserve(out.size() + 12 * mesh.vertices.size() + 13 * mesh.triangles.size());
   for (const Eigen::Vector3d& v : mesh.vertices) {

@@ -55,7 +55,8 @@ Status MarkModelPoints(const ScanSet& scans, const KinematicModel& model,
       if (!lattice.ProjectToCell(p, &row, &col)) continue;
       // Cells whose rays pass within `distance` of p: the window's angular
       // half-width is distance / range (grown by one cell for rounding).
-      const int w = std::min(64, static_cast<int>(std::ceil(options.distance / (p.norm() * step))) + 1);
+      const int w =
+          std::min(64, static_cast<int>(std::ceil(options.distance / (p.norm() * step))) + 1);
       const Eigen::Vector3f pf = p.cast<float>();
       for (int dc = -w; dc <= w; ++dc) {
         int c = col + dc;

@@ -48,7 +48,8 @@ bool RobotFitOptions::IsValid(std::string* error) const {
   };
   if (!edges.IsValid(error)) return false;
   if (!(icp_spacing > 0.0) || !(sweep_spacing > 0.0)) return fail("sample spacings must be > 0");
-  if (max_icp_samples < 100 || max_sweep_samples < 100) return fail("sample budgets must be >= 100");
+  if (max_icp_samples < 100 || max_sweep_samples < 100)
+    return fail("sample budgets must be >= 100");
   if (!base_rough.IsValid(error) || !base_icp.IsValid(error) || !sweep.IsValid(error) ||
       !joint_icp.IsValid(error) || !subtree_icp.IsValid(error)) {
     return false;
@@ -95,7 +96,7 @@ struct JointRecord {
   JointSweepSummary sweep;
   double sweep_margin = std::numeric_limits<double>::infinity();  // runner-up, per sample [m]
   int icp_iterations = 0;
-  // The subtree pass's ambiguity check (RobotFitOptions::ambiguity_*).
+  // ChainFitter::CheckAlternatives (RobotFitOptions::ambiguity_*).
   bool ambiguous = false;
   double alternative = 0.0;
   double margin = std::numeric_limits<double>::infinity();
@@ -152,72 +153,138 @@ class ChainFitter {
 
   // Extension of Sec. 5.2.2: each joint once more, parents first, with all
   // it carries (its subtree at the fitted values): a nearly round link (a
-  // wrist) fits its angle poorly alone; its children's lever fixes it. A
-  // joint whose sweep had a close runner-up is fitted from there as well;
-  // the lower Eq. (9) loss wins, and a small margin makes it ambiguous.
-  Status RefineSubtrees(const Pose& T_world_base, std::vector<JointRecord>* records,
-                        std::vector<double>* q) {
-    for (JointRecord& record : *records) {
+  // wrist) fits its angle poorly alone; its children's lever fixes it.
+  // Only the joints of records from `first` on that lie in `only_below`'s
+  // subtree (a link; -1: all).
+  Status RefineSubtrees(const Pose& T_world_base, size_t first, int only_below,
+                        std::vector<JointRecord>* records, std::vector<double>* q) {
+    const std::vector<bool> in_scope = SubtreeLinks(only_below);
+    for (size_t i = first; i < records->size(); ++i) {
+      const JointRecord& record = (*records)[i];
       const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+      if (!in_scope[static_cast<size_t>(j.child_link)]) continue;
       const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
       const LinkMotion motion =
           LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
       const Body subtree = MakeSubtree(model_, j.child_link, record.joint, T_world_link);
-      SurfaceSamples subtree_icp, subtree_sweep;
+      SurfaceSamples subtree_icp;
       AppendBodySamples(subtree, icp_samples_, Pose::Identity(), &subtree_icp);
-      AppendBodySamples(subtree, sweep_samples_, Pose::Identity(), &subtree_sweep);
       ThinSamples(options_.max_icp_samples, &subtree_icp);
-      ThinSamples(options_.max_sweep_samples, &subtree_sweep);
       if (subtree_icp.points.empty()) continue;
       const double before = (*q)[static_cast<size_t>(record.joint)];
       LinkState state;
       state.q = before;
       WeightedIcpSummary summary;
-      const WeightedIcpOptions icp_options = ForMotion(subtree_icp_, motion);
-      EDGEFIT_RETURN_IF_ERROR(icp_->Fit(subtree_icp, motion, icp_options, &state, &summary));
-      if (record.sweep_margin < options_.ambiguity_check_loss && !subtree_sweep.points.empty()) {
-        LinkState other;
-        other.q = state.q + (record.sweep.runner_up_q - record.sweep.q);
-        WeightedIcpSummary other_summary;
-        EDGEFIT_RETURN_IF_ERROR(
-            icp_->Fit(subtree_icp, motion, icp_options, &other, &other_summary));
-        const double loss = sweep_->Loss(subtree_sweep, motion, state.q, sweep_options_);
-        const double other_loss = sweep_->Loss(subtree_sweep, motion, other.q, sweep_options_);
-        if (other_loss < loss) {
-          std::swap(state, other);
-          std::swap(summary, other_summary);
-        }
-        record.alternative = NearestZeroTurn(motion, other.q);
-        record.margin =
-            std::abs(other_loss - loss) / static_cast<double>(subtree_sweep.points.size());
-        record.ambiguous = record.margin < options_.ambiguity_mean_loss;
-      }
-      state.q = NearestZeroTurn(motion, state.q);
-      (*q)[static_cast<size_t>(record.joint)] = state.q;
+      EDGEFIT_RETURN_IF_ERROR(
+          icp_->Fit(subtree_icp, motion, ForMotion(subtree_icp_, motion), &state, &summary));
+      (*q)[static_cast<size_t>(record.joint)] = NearestZeroTurn(motion, state.q);
       (void)model_.ResolveDependentJoints(q);
       char line[320];
-      std::snprintf(line, sizeof(line), "subtrees: %s %.5f -> %.5f%s, %s", j.name.c_str(), before,
-                    state.q, Describe(record).c_str(), summary.BriefReport().c_str());
+      std::snprintf(line, sizeof(line), "subtrees: %s %.5f -> %.5f, %s", j.name.c_str(), before,
+                    (*q)[static_cast<size_t>(record.joint)], summary.BriefReport().c_str());
+      say_(line);
+    }
+    return Status::Ok();
+  }
+
+  // A joint whose sweep found a runner-up nearly as good (a wrist turned
+  // half a turn, a bare flange) is fitted again from the runner-up, with
+  // every joint below it fitted anew (a wrist flip changes them too), and
+  // the subtree's Eq. (9) losses are compared: the lower wins; a margin
+  // below RobotFitOptions::ambiguity_mean_loss per sample makes the joint
+  // ambiguous.
+  Status CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
+                           std::vector<double>* q) {
+    for (size_t i = 0; i < records->size(); ++i) {
+      const JointRecord& record = (*records)[i];
+      if (!(record.sweep_margin < options_.ambiguity_check_loss)) continue;
+      const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+      std::vector<double> q_other = *q;
+      std::vector<JointRecord> other_records = *records;
+      q_other[static_cast<size_t>(record.joint)] = record.sweep.runner_up_q;
+      (void)model_.ResolveDependentJoints(&q_other);
+      const std::vector<bool> below = SubtreeLinks(j.child_link);
+      for (size_t k = i + 1; k < records->size(); ++k) {
+        const int link = model_.joints()[static_cast<size_t>((*records)[k].joint)].child_link;
+        if (below[static_cast<size_t>(link)]) {
+          EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, &q_other, &other_records[k]));
+        }
+      }
+      EDGEFIT_RETURN_IF_ERROR(
+          RefineSubtrees(T_world_base, i, j.child_link, &other_records, &q_other));
+      const size_t jj = static_cast<size_t>(record.joint);
+      const double separation = j.type == JointType::kPrismatic
+                                    ? std::abs(q_other[jj] - (*q)[jj])
+                                    : std::abs(std::remainder(q_other[jj] - (*q)[jj], 2.0 * M_PI));
+      const double distinct = j.type == JointType::kPrismatic ? sweep_options_.distinct_prismatic
+                                                              : sweep_options_.distinct_revolute;
+      if (separation < 0.5 * distinct) continue;  // back in the same basin: no alternative
+      const double loss = SubtreeLoss(T_world_base, *q, j.child_link);
+      const double other_loss = SubtreeLoss(T_world_base, q_other, j.child_link);
+      const bool take_other = other_loss < loss;
+      const double alternative = take_other ? (*q)[jj] : q_other[jj];
+      if (take_other) {
+        *q = std::move(q_other);
+        *records = std::move(other_records);
+      }
+      JointRecord& checked = (*records)[i];
+      checked.alternative = alternative;
+      checked.margin = std::abs(other_loss - loss) /
+                       static_cast<double>(SubtreeSampleCount(j.child_link));
+      checked.ambiguous = checked.margin < options_.ambiguity_mean_loss;
+      char line[320];
+      std::snprintf(line, sizeof(line),
+                    "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s",
+                    j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin,
+                    take_other ? " (the first fit's value)" : "",
+                    checked.ambiguous ? ": AMBIGUOUS" : "");
       say_(line);
     }
     return Status::Ok();
   }
 
  private:
+  // in[l]: link l is `link` or below it (link -1: every link).
+  std::vector<bool> SubtreeLinks(int link) const {
+    std::vector<bool> in(model_.links().size(), link < 0);
+    if (link < 0) return in;
+    std::vector<int> stack = {link};
+    while (!stack.empty()) {
+      const int l = stack.back();
+      stack.pop_back();
+      in[static_cast<size_t>(l)] = true;
+      for (const int c : model_.links()[static_cast<size_t>(l)].child_joints) {
+        stack.push_back(model_.joints()[static_cast<size_t>(c)].child_link);
+      }
+    }
+    return in;
+  }
+
+  // The Eq. (9) loss of every link at or below `link` at joint values q.
+  double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link) const {
+    const std::vector<Pose> T_world_link = model_.ForwardKinematics(q, T_world_base);
+    const std::vector<bool> below = SubtreeLinks(link);
+    double loss = 0.0;
+    for (size_t l = 0; l < below.size(); ++l) {
+      if (below[l] && !sweep_samples_[l].points.empty()) {
+        loss += sweep_->LossAt(sweep_samples_[l], T_world_link[l], sweep_options_);
+      }
+    }
+    return loss;
+  }
+  size_t SubtreeSampleCount(int link) const {
+    const std::vector<bool> below = SubtreeLinks(link);
+    size_t n = 0;
+    for (size_t l = 0; l < below.size(); ++l) n += below[l] ? sweep_samples_[l].size() : 0;
+    return std::max<size_t>(n, 1);
+  }
+
   // Prismatic joints keep point-to-point residuals: a part sliding along
   // its axis (a gun's jaw) shows few faces across the axis, and
   // point-to-plane leaves it free to slide.
   static WeightedIcpOptions ForMotion(WeightedIcpOptions options, const LinkMotion& motion) {
     if (motion.type == LinkMotion::Type::kPrismatic) options.point_to_plane = false;
     return options;
-  }
-
-  static std::string Describe(const JointRecord& record) {
-    if (!std::isfinite(record.margin)) return "";
-    char text[128];
-    std::snprintf(text, sizeof(text), " (other value %.5f: %.3f mm/sample worse%s)",
-                  record.alternative, 1e3 * record.margin, record.ambiguous ? ", AMBIGUOUS" : "");
-    return text;
   }
 
   Status FitJoint(const Pose& T_world_base, std::vector<double>* q, JointRecord* record) {
@@ -390,7 +457,8 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
   LinkState base_state;
   base_state.T_world_link = T_world_base;
   WeightedIcpSummary summary;
-  EDGEFIT_RETURN_IF_ERROR(icp.Fit(base_samples, LinkMotion::Free(), base_icp, &base_state, &summary));
+  EDGEFIT_RETURN_IF_ERROR(
+      icp.Fit(base_samples, LinkMotion::Free(), base_icp, &base_state, &summary));
   result->T_world_base = base_state.T_world_link;
   result->bodies.push_back(Quality(model, base, base_samples, summary, options));
   result->timings.base_precise = Since(stage);
@@ -402,7 +470,8 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
   std::vector<JointRecord> records;
   EDGEFIT_RETURN_IF_ERROR(chain.FitJoints(result->T_world_base, &q, &records));
   if (options.refine_subtrees) {
-    EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, &records, &q));
+    EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
+    EDGEFIT_RETURN_IF_ERROR(chain.CheckAlternatives(result->T_world_base, &records, &q));
   }
   const Status resolved = model.ResolveDependentJoints(&q);
   result->q = q;
@@ -411,14 +480,14 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
   // Quality of every body alone at the final values.
   const std::vector<Pose> T_world_link = model.ForwardKinematics(q, result->T_world_base);
   for (const JointRecord& record : records) {
-    const Body body = MakeBody(model, model.joints()[static_cast<size_t>(record.joint)].child_link,
-                               record.joint);
+    const Body body =
+        MakeBody(model, model.joints()[static_cast<size_t>(record.joint)].child_link, record.joint);
     SurfaceSamples samples;
     AppendBodySamples(body, icp_samples, Pose::Identity(), &samples);
     ThinSamples(options.max_icp_samples, &samples);
     if (samples.points.empty()) continue;  // an empty link: nothing to judge
-    EDGEFIT_RETURN_IF_ERROR(icp.Evaluate(samples, T_world_link[static_cast<size_t>(body.link)],
-                                         joint_icp, &summary));
+    EDGEFIT_RETURN_IF_ERROR(
+        icp.Evaluate(samples, T_world_link[static_cast<size_t>(body.link)], joint_icp, &summary));
     BodyQuality quality = Quality(model, body, samples, summary, options);
     quality.icp_iterations = record.icp_iterations;
     quality.symmetric = record.symmetric;
@@ -442,8 +511,9 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
                     "%s is ambiguous: %s = %.4f and %.4f fit the scan about equally well (Eq. 9 "
                     "loss %.3f mm apart per sample); an attached end effector or more scan "
                     "coverage would tell them apart",
-                    b.link.c_str(), b.joint.c_str(), result->q[static_cast<size_t>(
-                        model.JointIndex(b.joint))], b.alternative_value, 1e3 * b.ambiguity_margin);
+                    b.link.c_str(), b.joint.c_str(),
+                    result->q[static_cast<size_t>(model.JointIndex(b.joint))], b.alternative_value,
+                    1e3 * b.ambiguity_margin);
     } else {
       std::snprintf(line, sizeof(line),
                     "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "

@@ -4,6 +4,8 @@
 // runner-up; a box centred on the axis (2-fold symmetric) has a runner-up
 // half a turn away that costs about the same; the result does not depend
 // on the thread count.
+#include "solvers/joint_sweep.h"
+
 #include <glog/logging.h>
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -19,7 +21,6 @@
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
 #include "solvers/icp_test_util.h"
-#include "solvers/joint_sweep.h"
 
 namespace edgefit {
 namespace {

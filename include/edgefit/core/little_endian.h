@@ -10,7 +10,8 @@
 namespace edgefit {
 
 inline void AppendUint32LE(uint32_t value, std::string* out) {
-  for (int byte = 0; byte < 4; ++byte) out->push_back(static_cast<char>((value >> (8 * byte)) & 0xff));
+  for (int byte = 0; byte < 4; ++byte)
+    out->push_back(static_cast<char>((value >> (8 * byte)) & 0xff));
 }
 
 // IEEE 754 single precision.

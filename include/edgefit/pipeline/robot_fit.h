@@ -68,10 +68,12 @@ struct RobotFitOptions {
   double min_inlier_share = 0.8;
   double max_rms = 0.003;
   // Ambiguity (a link that fits two joint values, like a bare flange half a
-  // turn apart): when the sweep's runner-up costs less than
-  // ambiguity_check_loss more per sample than the best, both are refined
-  // by the ICP; the body is ambiguous (not ok) when their Eq. (9) losses then
-  // differ by less than ambiguity_mean_loss per sample [m].
+  // turn apart, or a wrist flipped with the joints below it): when the
+  // sweep's runner-up costs less than ambiguity_check_loss more per sample
+  // than the best, the joint is fitted again from there with every joint
+  // below it; the lower Eq. (9) loss of the subtree wins, and the joint is
+  // ambiguous (not ok) when the two differ by less than ambiguity_mean_loss
+  // per sample [m].
   double ambiguity_check_loss = 0.002;
   double ambiguity_mean_loss = 0.0002;
 

@@ -31,7 +31,12 @@ struct AssetScanOptions {
 
 // The sub-seeds of `seed` for each random part (also the `edgefit scan`
 // streams): 1 accessories, 2 clutter, 3 scanner placement, 4 range noise.
-enum class AssetScanStream : uint64_t { kAccessories = 1, kClutter = 2, kPlacement = 3, kNoise = 4 };
+enum class AssetScanStream : uint64_t {
+  kAccessories = 1,
+  kClutter = 2,
+  kPlacement = 3,
+  kNoise = 4
+};
 uint64_t AssetScanSeed(uint64_t seed, AssetScanStream stream);
 
 // Builds the scene and scans it. T_world_scanners receives the scanner poses
