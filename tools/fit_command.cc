@@ -196,6 +196,11 @@ int RunFit(const Command& command) {
                         {"rms_m", b.rms},            {"symmetric", b.symmetric},
                         {"icp_iterations", b.icp_iterations}, {"ok", b.ok}};
     if (!b.joint.empty()) per_link[b.link]["sweep_value"] = b.sweep_value;
+    per_link[b.link]["ambiguous"] = b.ambiguous;
+    if (std::isfinite(b.ambiguity_margin)) {  // an alternative value was fitted and compared
+      per_link[b.link]["alternative_value"] = b.alternative_value;
+      per_link[b.link]["alternative_margin_m"] = b.ambiguity_margin;
+    }
   }
   json result = {
       {"kind", "articulated"},

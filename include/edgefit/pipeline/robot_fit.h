@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -97,7 +98,7 @@ struct BodyQuality {
   // loss difference per sample [m]; infinity when not checked).
   bool ambiguous = false;
   double alternative_value = 0.0;
-  double ambiguity_margin = 0.0;
+  double ambiguity_margin = std::numeric_limits<double>::infinity();
   bool ok = false;
 };
 
