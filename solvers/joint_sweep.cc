@@ -149,7 +149,6 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
     summary->has_runner_up = true;
     refine(qs[runner_up], losses[runner_up], &summary->runner_up_q, &summary->runner_up_loss);
   }
-  summary->mean_loss = summary->loss / static_cast<double>(samples.points.size());
   summary->seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();

@@ -63,7 +63,6 @@ struct JointSweepOptions {
 struct JointSweepSummary {
   double q = 0.0;          // best joint value [rad] or [m]
   double loss = 0.0;       // its total Eq. (9) loss [m]
-  double mean_loss = 0.0;  // loss / samples [m]
   // The runner-up (JointSweepOptions::distinct_*), refined like the best.
   bool has_runner_up = false;
   double runner_up_q = 0.0;

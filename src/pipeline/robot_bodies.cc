@@ -27,22 +27,30 @@ Body MakeBody(const KinematicModel& model, int link, int joint) {
   return body;
 }
 
+std::vector<int> SubtreeLinks(const KinematicModel& model, int link) {
+  std::vector<int> links;
+  std::vector<int> stack = {link};
+  while (!stack.empty()) {
+    const int l = stack.back();
+    stack.pop_back();
+    links.push_back(l);
+    const std::vector<int>& children = model.links()[static_cast<size_t>(l)].child_joints;
+    for (auto it = children.rbegin(); it != children.rend(); ++it) {
+      stack.push_back(model.joints()[static_cast<size_t>(*it)].child_link);
+    }
+  }
+  return links;
+}
+
 Body MakeSubtree(const KinematicModel& model, int link, int joint,
                  const std::vector<Pose>& T_world_link) {
   Body body;
   body.link = link;
   body.joint = joint;
+  body.links = SubtreeLinks(model, link);
   const Pose T_link_world = T_world_link[static_cast<size_t>(link)].inverse();
-  std::vector<int> stack = {link};
-  while (!stack.empty()) {
-    const int l = stack.back();
-    stack.pop_back();
-    body.links.push_back(l);
+  for (const int l : body.links) {
     body.T_body_link.push_back(T_link_world * T_world_link[static_cast<size_t>(l)]);
-    const std::vector<int>& children = model.links()[static_cast<size_t>(l)].child_joints;
-    for (auto it = children.rbegin(); it != children.rend(); ++it) {
-      stack.push_back(model.joints()[static_cast<size_t>(*it)].child_link);
-    }
   }
   return body;
 }

@@ -24,7 +24,11 @@ struct Body {
 // The body of `link`: it and the links reached from it through fixed joints.
 Body MakeBody(const KinematicModel& model, int link, int joint);
 
-// The subtree of `link`: it and every link below it through any joint,
+// `link` and every link below it through any joint, depth first in URDF
+// order (link first).
+std::vector<int> SubtreeLinks(const KinematicModel& model, int link);
+
+// The subtree of `link` (SubtreeLinks),
 // posed by T_world_link (forward kinematics at the current values), in the
 // frame of `link`.
 Body MakeSubtree(const KinematicModel& model, int link, int joint,

@@ -158,7 +158,7 @@ class ChainFitter {
   // subtree (a link; -1: all).
   Status RefineSubtrees(const Pose& T_world_base, size_t first, int only_below,
                         std::vector<JointRecord>* records, std::vector<double>* q) {
-    const std::vector<bool> in_scope = SubtreeLinks(only_below);
+    const std::vector<bool> in_scope = SubtreeMask(only_below);
     for (size_t i = first; i < records->size(); ++i) {
       const JointRecord& record = (*records)[i];
       const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
@@ -203,7 +203,7 @@ class ChainFitter {
       std::vector<JointRecord> other_records = *records;
       q_other[static_cast<size_t>(record.joint)] = record.sweep.runner_up_q;
       (void)model_.ResolveDependentJoints(&q_other);
-      const std::vector<bool> below = SubtreeLinks(j.child_link);
+      const std::vector<bool> below = SubtreeMask(j.child_link);
       for (size_t k = i + 1; k < records->size(); ++k) {
         const int link = model_.joints()[static_cast<size_t>((*records)[k].joint)].child_link;
         if (below[static_cast<size_t>(link)]) {
@@ -219,8 +219,9 @@ class ChainFitter {
       const double distinct = j.type == JointType::kPrismatic ? sweep_options_.distinct_prismatic
                                                               : sweep_options_.distinct_revolute;
       if (separation < 0.5 * distinct) continue;  // back in the same basin: no alternative
-      const double loss = SubtreeLoss(T_world_base, *q, j.child_link);
-      const double other_loss = SubtreeLoss(T_world_base, q_other, j.child_link);
+      size_t samples = 0;
+      const double loss = SubtreeLoss(T_world_base, *q, j.child_link, &samples);
+      const double other_loss = SubtreeLoss(T_world_base, q_other, j.child_link, &samples);
       const bool take_other = other_loss < loss;
       const double alternative = take_other ? (*q)[jj] : q_other[jj];
       if (take_other) {
@@ -229,8 +230,8 @@ class ChainFitter {
       }
       JointRecord& checked = (*records)[i];
       checked.alternative = alternative;
-      checked.margin = std::abs(other_loss - loss) /
-                       static_cast<double>(SubtreeSampleCount(j.child_link));
+      checked.margin =
+          std::abs(other_loss - loss) / static_cast<double>(std::max<size_t>(samples, 1));
       checked.ambiguous = checked.margin < options_.ambiguity_mean_loss;
       char line[320];
       std::snprintf(line, sizeof(line),
@@ -245,38 +246,28 @@ class ChainFitter {
 
  private:
   // in[l]: link l is `link` or below it (link -1: every link).
-  std::vector<bool> SubtreeLinks(int link) const {
+  std::vector<bool> SubtreeMask(int link) const {
     std::vector<bool> in(model_.links().size(), link < 0);
-    if (link < 0) return in;
-    std::vector<int> stack = {link};
-    while (!stack.empty()) {
-      const int l = stack.back();
-      stack.pop_back();
-      in[static_cast<size_t>(l)] = true;
-      for (const int c : model_.links()[static_cast<size_t>(l)].child_joints) {
-        stack.push_back(model_.joints()[static_cast<size_t>(c)].child_link);
-      }
+    if (link >= 0) {
+      for (const int l : SubtreeLinks(model_, link)) in[static_cast<size_t>(l)] = true;
     }
     return in;
   }
 
-  // The Eq. (9) loss of every link at or below `link` at joint values q.
-  double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link) const {
+  // The Eq. (9) loss of every link at or below `link` at joint values q;
+  // *samples counts the sweep samples scored.
+  double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,
+                     size_t* samples) const {
     const std::vector<Pose> T_world_link = model_.ForwardKinematics(q, T_world_base);
-    const std::vector<bool> below = SubtreeLinks(link);
     double loss = 0.0;
-    for (size_t l = 0; l < below.size(); ++l) {
-      if (below[l] && !sweep_samples_[l].points.empty()) {
-        loss += sweep_->LossAt(sweep_samples_[l], T_world_link[l], sweep_options_);
-      }
+    *samples = 0;
+    for (const int l : SubtreeLinks(model_, link)) {
+      const SurfaceSamples& s = sweep_samples_[static_cast<size_t>(l)];
+      if (s.points.empty()) continue;
+      loss += sweep_->LossAt(s, T_world_link[static_cast<size_t>(l)], sweep_options_);
+      *samples += s.size();
     }
     return loss;
-  }
-  size_t SubtreeSampleCount(int link) const {
-    const std::vector<bool> below = SubtreeLinks(link);
-    size_t n = 0;
-    for (size_t l = 0; l < below.size(); ++l) n += below[l] ? sweep_samples_[l].size() : 0;
-    return std::max<size_t>(n, 1);
   }
 
   // Prismatic joints keep point-to-point residuals: a part sliding along
