@@ -245,16 +245,20 @@ int Run() {
         for (const BodyQuality& b : fit.bodies) {
           if (weakest == nullptr || b.inlier_share < weakest->inlier_share) weakest = &b;
         }
+        // A fit that stopped before its bodies (no base found) has no weakest body.
+        char weakest_text[256] = "none";
+        if (weakest != nullptr) {
+          std::snprintf(weakest_text, sizeof(weakest_text), "%.0f%% %s, %.2f mm",
+                        100.0 * weakest->inlier_share, weakest->link.c_str(), 1e3 * weakest->rms);
+        }
         std::printf(
-            "| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %.0f%% %s, %.2f mm | %.1f "
-            "s (%.1f, "
+            "| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %s | %.1f s (%.1f, "
             "%.1f+%.1f, %.1f) |\n",
             c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points), worst,
             worst_name.c_str(), record.failed ? " FAILED" : "",
             1e3 * record.errors.base_translation, record.errors.base_rotation / kDeg,
-            fit.ok ? "ok" : ("not ok: " + fit.message).c_str(), 100.0 * weakest->inlier_share,
-            weakest->link.c_str(), 1e3 * weakest->rms, fit.timings.total, fit.timings.edges,
-            fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain);
+            fit.ok ? "ok" : ("not ok: " + fit.message).c_str(), weakest_text, fit.timings.total,
+            fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain);
         std::fflush(stdout);
         records[weighting].push_back(record);
       }

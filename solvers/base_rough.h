@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -50,6 +51,14 @@ struct BaseRoughOptions {
   // positions by more than 2 cm), for the caller to choose from with a 3D
   // test; symmetric bases (a square plate) score alike in 2D.
   int candidates = 6;
+  // Single-corner search, run when the corner pairs' best hypothesis scores
+  // below this share of the model section points (few corners, one hidden):
+  // each scan corner onto each model corner, the yaw on a grid of
+  // single_corner_yaw_step [rad]; the single_corner_rescored best by a sparse
+  // score are scored in full.
+  double single_corner_below_share = 0.3;
+  double single_corner_yaw_step = 1.0 * M_PI / 180.0;
+  int single_corner_rescored = 200;
   // Optional region of the scan (world frame); empty: the whole scan.
   Eigen::AlignedBox3d roi_world;
   // Floor: normals within this angle of vertical (cosine).
@@ -61,11 +70,11 @@ struct BaseRoughOptions {
 struct BaseRoughResult {
   Pose T_world_base = Pose::Identity();  // the best hypothesis
   std::vector<Pose> candidates;          // distinct hypotheses, best first (incl. the best)
-  double floor_z = 0.0;         // [m]
-  int scan_corners = 0;         // over all heights
+  double floor_z = 0.0;                  // [m]
+  int scan_corners = 0;                  // over all heights
   int model_corners = 0;
-  int hypotheses = 0;           // scored
-  double inlier_share = 0.0;    // of the scored model section points, at the best pose
+  int hypotheses = 0;         // scored
+  double inlier_share = 0.0;  // of the scored model section points, at the best pose
   double seconds = 0.0;
 };
 
