@@ -80,6 +80,11 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
   if (!motion.has_limits) {  // continuous joint: one turn (prismatic: none in URDF)
     lower = -M_PI;
     upper = M_PI;
+  } else if (revolute && upper - lower > 2.0 * M_PI) {
+    // Over a turn of range: every pose has a value within one turn (the one
+    // nearest zero when the limits hold it), so sweep that turn only.
+    lower = std::max(lower, std::min(-M_PI, upper - 2.0 * M_PI));
+    upper = lower + 2.0 * M_PI;
   }
   const double coarse = revolute ? options.revolute_step : options.prismatic_step;
   // Losses of several joint values, in parallel: each is a serial sum, so
@@ -132,9 +137,8 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
   // the best (a full turn wraps around).
   const bool full_turn = revolute && upper - lower >= 2.0 * M_PI - 1.5 * coarse;
   const double distinct = revolute ? options.distinct_revolute : options.distinct_prismatic;
-  auto distance = [&](double a, double b) {
-    const double d = std::abs(a - b);
-    return full_turn ? std::min(d, 2.0 * M_PI - d) : d;
+  auto distance = [&](double a, double b) {  // a range over a turn holds aliases
+    return full_turn ? std::abs(std::remainder(a - b, 2.0 * M_PI)) : std::abs(a - b);
   };
   size_t runner_up = n;
   for (size_t k = 0; k < n; ++k) {

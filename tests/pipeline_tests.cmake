@@ -4,3 +4,8 @@ edgefit_add_test(pipeline_test SINGLE_PROCESS
   SOURCES pipeline/robot_fit_test.cc
   LIBS edgefit::pipeline edgefit::scanner edgefit::scene edgefit::model glog::glog
        OpenMP::OpenMP_CXX)
+# The body helpers (internal header): symmetry test, round part, posing.
+edgefit_add_test(robot_bodies_test
+  SOURCES pipeline/robot_bodies_test.cc
+  LIBS edgefit::pipeline edgefit::model)
+target_include_directories(robot_bodies_test PRIVATE ${PROJECT_SOURCE_DIR}/src/pipeline)

@@ -1,5 +1,6 @@
 #include "robot_bodies.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -55,18 +56,23 @@ Body MakeSubtree(const KinematicModel& model, int link, int joint,
   return body;
 }
 
+void AppendPosedSamples(const SurfaceSamples& samples, const Pose& T_out_samples,
+                        SurfaceSamples* out) {
+  const Eigen::Matrix3f R = T_out_samples.linear().cast<float>();
+  const Eigen::Vector3f t = T_out_samples.translation().cast<float>();
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    out->points.push_back(R * samples.points[i] + t);
+    if (samples.normals.size() == samples.points.size())
+      out->normals.push_back(R * samples.normals[i]);
+    out->triangles.push_back(-1);  // not one mesh any more
+  }
+}
+
 void AppendBodySamples(const Body& body, const std::vector<SurfaceSamples>& link_samples,
                        const Pose& T_body_frame, SurfaceSamples* out) {
   for (size_t k = 0; k < body.links.size(); ++k) {
-    const SurfaceSamples& s = link_samples[static_cast<size_t>(body.links[k])];
-    const Pose T = T_body_frame * body.T_body_link[k];
-    const Eigen::Matrix3f R = T.linear().cast<float>();
-    const Eigen::Vector3f t = T.translation().cast<float>();
-    for (size_t i = 0; i < s.points.size(); ++i) {
-      out->points.push_back(R * s.points[i] + t);
-      if (s.normals.size() == s.points.size()) out->normals.push_back(R * s.normals[i]);
-      out->triangles.push_back(-1);  // not one mesh any more
-    }
+    AppendPosedSamples(link_samples[static_cast<size_t>(body.links[k])],
+                       T_body_frame * body.T_body_link[k], out);
   }
 }
 
@@ -84,33 +90,57 @@ void ThinSamples(int max_samples, SurfaceSamples* samples) {
   *samples = std::move(thin);
 }
 
-bool IsRotationallySymmetric(const SurfaceSamples& samples, const Eigen::Vector3d& axis_body,
-                             double min_share) {
-  if (samples.points.empty()) return false;
+namespace {
+
+// round[i]: sample i lies on a round ring about the axis (see the header).
+std::vector<bool> OnRoundRings(const SurfaceSamples& samples, const Eigen::Vector3d& axis_body) {
   const Eigen::Vector3d a = axis_body.normalized();
   const Eigen::Vector3d u = a.unitOrthogonal(), v = a.cross(u);
   constexpr double kBin = 0.005;
   constexpr int kSectors = 12;
-  std::map<std::pair<int64_t, int64_t>, std::pair<uint32_t, size_t>> rings;  // sectors, count
+  using Key = std::pair<int64_t, int64_t>;  // radius bin, height bin
+  std::vector<Key> keys;
+  keys.reserve(samples.points.size());
+  std::map<Key, uint32_t> sectors;  // bit s: sector s holds a sample
   for (const Eigen::Vector3f& pf : samples.points) {
     const Eigen::Vector3d p = pf.cast<double>();
     const double h = a.dot(p), x = u.dot(p), y = v.dot(p);
     const double r = std::hypot(x, y);
-    const std::pair<int64_t, int64_t> key{static_cast<int64_t>(std::floor(r / kBin)),
-                                          static_cast<int64_t>(std::floor(h / kBin))};
+    keys.emplace_back(static_cast<int64_t>(std::floor(r / kBin)),
+                      static_cast<int64_t>(std::floor(h / kBin)));
     int sector = static_cast<int>(std::floor((std::atan2(y, x) + M_PI) / (2.0 * M_PI) * kSectors));
     sector = std::min(std::max(sector, 0), kSectors - 1);
-    auto& ring = rings[key];
-    ring.first |= 1u << sector;
-    ++ring.second;
+    sectors[keys.back()] |= 1u << sector;
   }
-  size_t on_round = 0;
-  for (const auto& [key, ring] : rings) {
+  std::vector<bool> round(keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) {
     // Samples within a bin of the axis are round whatever their sectors.
-    const bool round = key.first == 0 || __builtin_popcount(ring.first) >= 9;
-    if (round) on_round += ring.second;
+    round[i] = keys[i].first == 0 || __builtin_popcount(sectors[keys[i]]) >= 9;
   }
+  return round;
+}
+
+}  // namespace
+
+bool IsRotationallySymmetric(const SurfaceSamples& samples, const Eigen::Vector3d& axis_body,
+                             double min_share) {
+  if (samples.points.empty()) return false;
+  const std::vector<bool> round = OnRoundRings(samples, axis_body);
+  const size_t on_round = static_cast<size_t>(std::count(round.begin(), round.end(), true));
   return static_cast<double>(on_round) >= min_share * static_cast<double>(samples.points.size());
+}
+
+SurfaceSamples RoundPart(const SurfaceSamples& samples, const Eigen::Vector3d& axis_body) {
+  const std::vector<bool> round = OnRoundRings(samples, axis_body);
+  const size_t n = samples.points.size();
+  SurfaceSamples out;
+  for (size_t i = 0; i < n; ++i) {
+    if (!round[i]) continue;
+    out.points.push_back(samples.points[i]);
+    if (samples.normals.size() == n) out.normals.push_back(samples.normals[i]);
+    if (samples.triangles.size() == n) out.triangles.push_back(samples.triangles[i]);
+  }
+  return out;
 }
 
 }  // namespace edgefit

@@ -15,9 +15,9 @@
 namespace edgefit {
 
 struct Body {
-  int link = -1;                 // the body's frame
-  int joint = -1;                // the joint moving it (-1: the root body)
-  std::vector<int> links;        // link first, then the links fixed below it
+  int link = -1;                  // the body's frame
+  int joint = -1;                 // the joint moving it (-1: the root body)
+  std::vector<int> links;         // link first, then the links fixed below it
   std::vector<Pose> T_body_link;  // per entry of links
 };
 
@@ -33,6 +33,10 @@ std::vector<int> SubtreeLinks(const KinematicModel& model, int link);
 // frame of `link`.
 Body MakeSubtree(const KinematicModel& model, int link, int joint,
                  const std::vector<Pose>& T_world_link);
+
+// Appends samples posed by T_out_samples (source triangles become -1).
+void AppendPosedSamples(const SurfaceSamples& samples, const Pose& T_out_samples,
+                        SurfaceSamples* out);
 
 // Samples of the body's links (samples indexed like model.links()) in the
 // body frame; T_body_extra places extra samples (another body's, posed).
@@ -50,6 +54,10 @@ void ThinSamples(int max_samples, SurfaceSamples* samples);
 // round rings.
 bool IsRotationallySymmetric(const SurfaceSamples& samples, const Eigen::Vector3d& axis_body,
                              double min_share);
+
+// The samples on round rings (as above) about the axis: the part of a body
+// that looks the same at every value of its joint.
+SurfaceSamples RoundPart(const SurfaceSamples& samples, const Eigen::Vector3d& axis_body);
 
 }  // namespace edgefit
 

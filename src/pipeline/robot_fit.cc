@@ -48,7 +48,11 @@ bool RobotFitOptions::IsValid(std::string* error) const {
   };
   if (!edges.IsValid(error)) return false;
   if (!(icp_spacing > 0.0) || !(sweep_spacing > 0.0)) return fail("sample spacings must be > 0");
-  if (max_icp_samples < 100 || max_sweep_samples < 100)
+  if (max_resweeps < 0 || !(resweep_tolerance_rad > 0.0) || !(resweep_tolerance_m > 0.0) ||
+      !(resweep_window_rad > 0.0)) {
+    return fail("max_resweeps must be >= 0 and the resweep tolerances and window > 0");
+  }
+  if (max_icp_samples < 100 || max_sweep_samples < 100 || max_subtree_icp_samples < 100)
     return fail("sample budgets must be >= 100");
   if (!base_rough.IsValid(error) || !base_icp.IsValid(error) || !sweep.IsValid(error) ||
       !joint_icp.IsValid(error) || !subtree_icp.IsValid(error)) {
@@ -58,6 +62,9 @@ bool RobotFitOptions::IsValid(std::string* error) const {
     return fail("min_inlier_share must be in [0, 1]");
   }
   if (!(max_rms > 0.0)) return fail("max_rms must be > 0");
+  if (!(pinning_revolute > 0.0) || !(pinning_prismatic > 0.0) || !(pinning_mean_loss >= 0.0)) {
+    return fail("the pinning steps must be > 0 and pinning_mean_loss >= 0");
+  }
   return true;
 }
 
@@ -139,14 +146,23 @@ class ChainFitter {
       records->push_back(record);
     }
     // A symmetric body was swept with its children at values not fitted
-    // yet: sweep it and every joint after it once more, the children now
-    // near their values (a round wrist, then the flange and the gun).
+    // yet: it and every joint after it are swept again near their values
+    // (RobotFitOptions::max_resweeps) until none moves (a round wrist, then
+    // the flange and the gun settle together).
     const auto first_symmetric = std::find_if(records->begin(), records->end(),
                                               [](const JointRecord& r) { return r.symmetric; });
-    if (options_.resweep_after_symmetric) {
+    for (int pass = 0; pass < options_.max_resweeps && first_symmetric != records->end(); ++pass) {
+      bool moved = false;
       for (auto it = first_symmetric; it != records->end(); ++it) {
-        EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &*it));
+        const Joint& j = model_.joints()[static_cast<size_t>(it->joint)];
+        const double before = (*q)[static_cast<size_t>(it->joint)];
+        EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &*it, /*resweep=*/true));
+        const double change = (*q)[static_cast<size_t>(it->joint)] - before;
+        moved |= j.type == JointType::kPrismatic ? std::abs(change) > options_.resweep_tolerance_m
+                                                 : std::abs(std::remainder(change, 2.0 * M_PI)) >
+                                                       options_.resweep_tolerance_rad;
       }
+      if (!moved) break;
     }
     return Status::Ok();
   }
@@ -169,7 +185,7 @@ class ChainFitter {
       const Body subtree = MakeSubtree(model_, j.child_link, record.joint, T_world_link);
       SurfaceSamples subtree_icp;
       AppendBodySamples(subtree, icp_samples_, Pose::Identity(), &subtree_icp);
-      ThinSamples(options_.max_icp_samples, &subtree_icp);
+      ThinSamples(options_.max_subtree_icp_samples, &subtree_icp);
       if (subtree_icp.points.empty()) continue;
       const double before = (*q)[static_cast<size_t>(record.joint)];
       LinkState state;
@@ -244,6 +260,48 @@ class ChainFitter {
     return Status::Ok();
   }
 
+  // Whether the scan pins each joint down: its subtree's Eq. (9) loss at
+  // the joint's value moved by the failure bound (RobotFitOptions::
+  // pinning_*), either way within the limits, must rise by at least
+  // pinning_mean_loss per sample; else the joint is ambiguous with the
+  // moved value as its alternative (a gun's jaw whose tip no scanner saw
+  // slides freely along its rod).
+  void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
+                    const std::vector<double>& q) const {
+    for (JointRecord& record : *records) {
+      const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+      const size_t jj = static_cast<size_t>(record.joint);
+      const double step =
+          j.type == JointType::kPrismatic ? options_.pinning_prismatic : options_.pinning_revolute;
+      size_t samples = 0;
+      const double loss = SubtreeLoss(T_world_base, q, j.child_link, &samples);
+      if (samples == 0) continue;
+      double rise = std::numeric_limits<double>::infinity(), moved_to = q[jj];
+      for (const double sign : {-1.0, 1.0}) {
+        std::vector<double> q_moved = q;
+        q_moved[jj] += sign * step;
+        if (j.has_limits && (q_moved[jj] < j.lower || q_moved[jj] > j.upper)) continue;
+        (void)model_.ResolveDependentJoints(&q_moved);
+        const double r = (SubtreeLoss(T_world_base, q_moved, j.child_link, &samples) - loss) /
+                         static_cast<double>(samples);
+        if (r < rise) {
+          rise = r;
+          moved_to = q_moved[jj];
+        }
+      }
+      char line[200];
+      std::snprintf(line, sizeof(line), "pinning: %s moved by %g costs %.3f mm/sample more%s",
+                    j.name.c_str(), step, 1e3 * rise,
+                    rise < options_.pinning_mean_loss ? ": AMBIGUOUS" : "");
+      say_(line);
+      if (rise < options_.pinning_mean_loss && rise < record.margin) {
+        record.ambiguous = true;
+        record.alternative = moved_to;
+        record.margin = rise;
+      }
+    }
+  }
+
  private:
   // in[l]: link l is `link` or below it (link -1: every link).
   std::vector<bool> SubtreeMask(int link) const {
@@ -278,7 +336,11 @@ class ChainFitter {
     return options;
   }
 
-  Status FitJoint(const Pose& T_world_base, std::vector<double>* q, JointRecord* record) {
+  // resweep: the joint was fitted before; a revolute joint is swept only
+  // within RobotFitOptions::resweep_window_rad of its value and keeps its
+  // symmetry decision and runner-up.
+  Status FitJoint(const Pose& T_world_base, std::vector<double>* q, JointRecord* record,
+                  bool resweep = false) {
     const Joint& j = model_.joints()[static_cast<size_t>(record->joint)];
     const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
     const LinkMotion motion =
@@ -292,9 +354,16 @@ class ChainFitter {
     // body whose own sweep finds a second value nearly as good (a round
     // wrist with a small boss: the ring test passes it, the scan cannot).
     const bool revolute = motion.type == LinkMotion::Type::kRevolute;
-    record->symmetric =
-        body_icp.points.empty() ||
-        (revolute && IsRotationallySymmetric(body_icp, j.axis, options_.symmetric_share));
+    const bool local = resweep && revolute;
+    if (!local) {
+      record->symmetric =
+          body_icp.points.empty() ||
+          (revolute && IsRotationallySymmetric(body_icp, j.axis, options_.symmetric_share));
+    }
+    // A revolute child adds only its round part about its own axis when it
+    // has one (a flange): that part is where it is whatever the child's
+    // value, while the rest, at a value not fitted yet, could pull this
+    // joint into a wrong basin it would not leave (a wrist under a gun).
     auto add_children = [&] {
       for (const int link : body.links) {
         for (const int child_joint : model_.links()[static_cast<size_t>(link)].child_joints) {
@@ -303,8 +372,19 @@ class ChainFitter {
           const Body child = MakeBody(model_, c.child_link, child_joint);
           const Pose T_body_child = T_world_link[static_cast<size_t>(j.child_link)].inverse() *
                                     T_world_link[static_cast<size_t>(c.child_link)];
-          AppendBodySamples(child, sweep_samples_, T_body_child, &body_sweep);
-          AppendBodySamples(child, icp_samples_, T_body_child, &body_icp);
+          SurfaceSamples child_sweep, child_icp;
+          AppendBodySamples(child, sweep_samples_, Pose::Identity(), &child_sweep);
+          AppendBodySamples(child, icp_samples_, Pose::Identity(), &child_icp);
+          if (c.type != JointType::kPrismatic) {
+            SurfaceSamples round_sweep = RoundPart(child_sweep, c.axis);
+            if (static_cast<double>(round_sweep.size()) >=
+                options_.min_round_child_share * static_cast<double>(child_sweep.size())) {
+              child_sweep = std::move(round_sweep);
+              child_icp = RoundPart(child_icp, c.axis);
+            }
+          }
+          AppendPosedSamples(child_sweep, T_body_child, &body_sweep);
+          AppendPosedSamples(child_icp, T_body_child, &body_icp);
         }
       }
     };
@@ -315,6 +395,23 @@ class ChainFitter {
       return Status::Error("robot fit: joint '" + j.name + "' moves no mesh");
     }
     auto sweep = [&] {
+      if (local) {
+        LinkMotion window = motion;
+        const double q0 = (*q)[static_cast<size_t>(record->joint)];
+        window.lower = q0 - options_.resweep_window_rad;
+        window.upper = q0 + options_.resweep_window_rad;
+        if (motion.has_limits) {
+          window.lower = std::max(window.lower, motion.lower);
+          window.upper = std::min(window.upper, motion.upper);
+        }
+        window.has_limits = true;
+        JointSweepSummary summary;
+        EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, window, sweep_options_, &summary));
+        record->sweep.q = summary.q;
+        record->sweep.loss = summary.loss;
+        record->sweep.seconds = summary.seconds;
+        return Status::Ok();
+      }
       EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, motion, sweep_options_, &record->sweep));
       record->sweep_margin = record->sweep.has_runner_up
                                  ? (record->sweep.runner_up_loss - record->sweep.loss) /
@@ -464,6 +561,7 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
     EDGEFIT_RETURN_IF_ERROR(chain.CheckAlternatives(result->T_world_base, &records, &q));
   }
+  chain.CheckPinning(result->T_world_base, &records, q);
   const Status resolved = model.ResolveDependentJoints(&q);
   result->q = q;
   result->timings.chain = Since(stage);

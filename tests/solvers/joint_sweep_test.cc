@@ -72,12 +72,12 @@ SweepScene ScanLink(const TriangleMesh& mesh) {
   return out;
 }
 
-JointSweepSummary Sweep(const SweepScene& scene) {
+JointSweepSummary Sweep(const SweepScene& scene, const LinkMotion& motion = Joint()) {
   CorrespondenceSearch search(&scene.scans, nullptr);
   const ScanVisibility visibility(&scene.scans);
   const JointSweep sweep(&search.lattice(), &visibility);
   JointSweepSummary summary;
-  const Status status = sweep.Sweep(scene.samples, Joint(), JointSweepOptions(), &summary);
+  const Status status = sweep.Sweep(scene.samples, motion, JointSweepOptions(), &summary);
   EXPECT_TRUE(status.ok()) << status.message();
   return summary;
 }
@@ -110,6 +110,22 @@ TEST(JointSweepTest, SymmetricBoxHasARunnerUpHalfATurnAway) {
   const double margin =
       (summary.runner_up_loss - summary.loss) / static_cast<double>(scene.samples.size());
   EXPECT_LT(margin, 0.0002) << "per sample [m]";
+}
+
+// A range of nearly two turns (a robot's sixth axis): one turn is swept,
+// the value within it (nearest zero) found, and its alias a turn away is
+// no runner-up.
+TEST(JointSweepTest, RangeOverATurnSweepsOneTurn) {
+  const SweepScene scene = ScanLink(testing_util::LinkMesh());
+  LinkMotion motion = Joint();
+  motion.lower = -6.1;
+  motion.upper = 6.1;
+  const JointSweepSummary summary = Sweep(scene, motion);
+  EXPECT_NEAR(summary.q, kTrueAngle, 0.011 * kDeg);
+  ASSERT_TRUE(summary.has_runner_up);
+  EXPECT_GE(std::abs(std::remainder(summary.runner_up_q - summary.q, 2.0 * M_PI)),
+            JointSweepOptions().distinct_revolute);
+  EXPECT_LT(summary.evaluations, Sweep(scene).evaluations + 10);
 }
 
 TEST(JointSweepTest, SameResultForAnyThreadCount) {

@@ -37,6 +37,10 @@ struct RobotFitOptions {
   // 4 mm has 250 k, more than the pose needs and slow in Ceres.
   int max_icp_samples = 30000;
   int max_sweep_samples = 3000;
+  // The subtree pass (a whole arm at once, one joint free) needs fewer:
+  // halving them kept every joint within 0.003 deg on the 5.9 M point
+  // weld_low scene and took a second off the chain.
+  int max_subtree_icp_samples = 15000;
   uint64_t seed = 1;  // sampling and RANSAC
   BaseRoughOptions base_rough;
   // Base precise ICP (6-DoF); its first gate covers the rough error.
@@ -58,9 +62,20 @@ struct RobotFitOptions {
   // runner-up (JointSweepOptions::distinct_revolute away) costing less than
   // this more per sample than the best [m]: the scan cannot tell them apart.
   double flat_sweep_loss = 0.0005;
-  // A symmetric body is swept with its children at values not fitted yet;
-  // when true, it and every joint after it are swept and fitted once more.
-  bool resweep_after_symmetric = true;
+  // The children a symmetric body carries: a revolute child adds only its
+  // round part about its own axis (see robot_bodies.h) when that holds at
+  // least this share of its samples, else all of it at its current value.
+  double min_round_child_share = 0.1;
+  // A symmetric body is swept with its children at values not fitted yet:
+  // it and every joint after it are swept and fitted again, up to this many
+  // times, until no joint moves by more than resweep_tolerance_rad
+  // (revolute) or resweep_tolerance_m (prismatic). 0: no resweep.
+  int max_resweeps = 3;
+  double resweep_tolerance_rad = 0.2 * M_PI / 180.0;  // a basin change, not the ICP's jitter
+  double resweep_tolerance_m = 0.002;
+  // A revolute joint's resweeps cover this much either side of its value
+  // [rad] (its first sweep covers its range; prismatic joints always do).
+  double resweep_window_rad = 20.0 * M_PI / 180.0;
   // Optional base hint: skip the rough base stage and start from this pose.
   bool has_initial_base = false;
   Pose T_world_base_initial = Pose::Identity();
@@ -74,9 +89,20 @@ struct RobotFitOptions {
   // than the best, the joint is fitted again from there with every joint
   // below it; the lower Eq. (9) loss of the subtree wins, and the joint is
   // ambiguous (not ok) when the two differ by less than ambiguity_mean_loss
-  // per sample [m].
+  // per sample [m]. Calibrated on the bundled robot's 46 edge-weighted fits
+  // (23 postures, with and without accessories): every one of 66 checks
+  // chose the right value, the smallest margin 0.12 mm (a flipped wrist
+  // whose only tell is a drive cover); a jaw no scanner saw differed by
+  // 0.006 mm. The bound is half the smallest right margin.
   double ambiguity_check_loss = 0.002;
-  double ambiguity_mean_loss = 0.0002;
+  // A joint moved by these (a failed fit's bound) must cost at least
+  // pinning_mean_loss per sample more [m], else it is ambiguous. Set from
+  // the bundled gun's jaw (a rod sliding along itself): 0.016 mm when 9 mm
+  // off, 0.020 mm when right by luck, 0.047 and 0.078 mm when pinned.
+  double pinning_revolute = 0.5 * M_PI / 180.0;  // [rad]
+  double pinning_prismatic = 0.005;              // [m]
+  double pinning_mean_loss = 0.00003;
+  double ambiguity_mean_loss = 0.00006;
 
   static WeightedIcpOptions DefaultBaseIcp();
   static WeightedIcpOptions DefaultJointIcp();
@@ -85,10 +111,10 @@ struct RobotFitOptions {
 };
 
 struct BodyQuality {
-  std::string link;          // the moved link (the base: the root)
-  std::string joint;         // the joint that moves it ("" for the base)
-  size_t samples = 0;        // CAD samples
-  size_t visible = 0;        // seen at the fitted pose
+  std::string link;    // the moved link (the base: the root)
+  std::string joint;   // the joint that moves it ("" for the base)
+  size_t samples = 0;  // CAD samples
+  size_t visible = 0;  // seen at the fitted pose
   double inlier_share = 0.0;
   double rms = 0.0;          // [m]
   bool symmetric = false;    // the sweep included the child's loss
@@ -110,7 +136,7 @@ struct RobotFitResult {
   Pose T_world_base = Pose::Identity();  // root link in the world frame
   std::vector<double> q;                 // every joint, KinematicModel order
   BaseRoughResult base_rough;
-  std::vector<BodyQuality> bodies;       // base first, then joints in fit order
+  std::vector<BodyQuality> bodies;  // base first, then joints in fit order
   RobotFitTimings timings;
   bool ok = false;
   std::string message;  // why not ok
