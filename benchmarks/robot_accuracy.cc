@@ -241,6 +241,7 @@ int Run() {
                 << ',' << fit.timings.total << '\n';
           }
         }
+        if (csv) csv.flush();  // a long run's rows are usable as they come
         const BodyQuality* weakest = nullptr;
         for (const BodyQuality& b : fit.bodies) {
           if (weakest == nullptr || b.inlier_share < weakest->inlier_share) weakest = &b;

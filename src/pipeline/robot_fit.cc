@@ -62,8 +62,8 @@ bool RobotFitOptions::IsValid(std::string* error) const {
     return fail("min_inlier_share must be in [0, 1]");
   }
   if (!(max_rms > 0.0)) return fail("max_rms must be > 0");
-  if (!(pinning_revolute > 0.0) || !(pinning_prismatic > 0.0) || !(pinning_mean_loss >= 0.0)) {
-    return fail("the pinning steps must be > 0 and pinning_mean_loss >= 0");
+  if (!(pinning_revolute > 0.0) || !(pinning_mean_loss >= 0.0)) {
+    return fail("pinning_revolute must be > 0 and pinning_mean_loss >= 0");
   }
   return true;
 }
@@ -260,19 +260,18 @@ class ChainFitter {
     return Status::Ok();
   }
 
-  // Whether the scan pins each joint down: its subtree's Eq. (9) loss at
-  // the joint's value moved by the failure bound (RobotFitOptions::
-  // pinning_*), either way within the limits, must rise by at least
+  // Whether the scan pins each revolute joint down: its subtree's Eq. (9)
+  // loss at the joint's value moved by the failure bound (RobotFitOptions::
+  // pinning_revolute), either way within the limits, must rise by at least
   // pinning_mean_loss per sample; else the joint is ambiguous with the
-  // moved value as its alternative (a gun's jaw whose tip no scanner saw
-  // slides freely along its rod).
+  // moved value as its alternative (a round link nothing below tells).
   void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
                     const std::vector<double>& q) const {
     for (JointRecord& record : *records) {
       const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+      if (j.type == JointType::kPrismatic) continue;  // see RobotFitOptions::pinning_mean_loss
       const size_t jj = static_cast<size_t>(record.joint);
-      const double step =
-          j.type == JointType::kPrismatic ? options_.pinning_prismatic : options_.pinning_revolute;
+      const double step = options_.pinning_revolute;
       size_t samples = 0;
       const double loss = SubtreeLoss(T_world_base, q, j.child_link, &samples);
       if (samples == 0) continue;
