@@ -208,9 +208,11 @@ class ChainFitter {
   // every joint below it fitted anew (a wrist flip changes them too), and
   // the subtree's Eq. (9) losses are compared: the lower wins; a margin
   // below RobotFitOptions::ambiguity_mean_loss per sample makes the joint
-  // ambiguous.
+  // ambiguous. *switched: some joint took its other value (the joints
+  // above it were refined with the old subtree: refine them again).
   Status CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
-                           std::vector<double>* q) {
+                           std::vector<double>* q, bool* switched) {
+    *switched = false;
     for (size_t i = 0; i < records->size(); ++i) {
       const JointRecord& record = (*records)[i];
       if (!(record.sweep_margin < options_.ambiguity_check_loss)) continue;
@@ -241,6 +243,7 @@ class ChainFitter {
       const bool take_other = other_loss < loss;
       const double alternative = take_other ? (*q)[jj] : q_other[jj];
       if (take_other) {
+        *switched = true;
         *q = std::move(q_other);
         *records = std::move(other_records);
       }
@@ -262,8 +265,8 @@ class ChainFitter {
 
   // Whether the scan pins each revolute joint down: its subtree's Eq. (9)
   // loss at the joint's value moved by the failure bound (RobotFitOptions::
-  // pinning_revolute), either way within the limits, must rise by at least
-  // pinning_mean_loss per sample; else the joint is ambiguous with the
+  // pinning_revolute) must rise by at least pinning_mean_loss per sample on
+  // average over the two sides (within the limits); else the joint is ambiguous with the
   // moved value as its alternative (a round link nothing below tells).
   void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
                     const std::vector<double>& q) const {
@@ -275,7 +278,12 @@ class ChainFitter {
       size_t samples = 0;
       const double loss = SubtreeLoss(T_world_base, q, j.child_link, &samples);
       if (samples == 0) continue;
-      double rise = std::numeric_limits<double>::infinity(), moved_to = q[jj];
+      // The mean rise of the two sides: a tilted valley (the ICP's value a
+      // little off the Eq. 9 minimum) still rises on average; a flat one
+      // does not.
+      double rise_sum = 0.0, lowest = std::numeric_limits<double>::infinity();
+      double moved_to = q[jj];
+      int sides = 0;
       for (const double sign : {-1.0, 1.0}) {
         std::vector<double> q_moved = q;
         q_moved[jj] += sign * step;
@@ -283,11 +291,15 @@ class ChainFitter {
         (void)model_.ResolveDependentJoints(&q_moved);
         const double r = (SubtreeLoss(T_world_base, q_moved, j.child_link, &samples) - loss) /
                          static_cast<double>(samples);
-        if (r < rise) {
-          rise = r;
+        rise_sum += r;
+        ++sides;
+        if (r < lowest) {
+          lowest = r;
           moved_to = q_moved[jj];
         }
       }
+      if (sides == 0) continue;
+      const double rise = rise_sum / sides;
       char line[200];
       std::snprintf(line, sizeof(line), "pinning: %s moved by %g costs %.3f mm/sample more%s",
                     j.name.c_str(), step, 1e3 * rise,
@@ -558,7 +570,15 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
   EDGEFIT_RETURN_IF_ERROR(chain.FitJoints(result->T_world_base, &q, &records));
   if (options.refine_subtrees) {
     EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
-    EDGEFIT_RETURN_IF_ERROR(chain.CheckAlternatives(result->T_world_base, &records, &q));
+    bool switched = false;
+    EDGEFIT_RETURN_IF_ERROR(chain.CheckAlternatives(result->T_world_base, &records, &q, &switched));
+    for (int pass = 0; switched && pass < 3; ++pass) {
+      const std::vector<double> before = q;
+      EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
+      double largest = 0.0;
+      for (size_t k = 0; k < q.size(); ++k) largest = std::max(largest, std::abs(q[k] - before[k]));
+      switched = largest > 0.01 * M_PI / 180.0;
+    }
   }
   chain.CheckPinning(result->T_world_base, &records, q);
   const Status resolved = model.ResolveDependentJoints(&q);
