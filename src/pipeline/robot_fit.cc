@@ -65,6 +65,9 @@ bool RobotFitOptions::IsValid(std::string* error) const {
   if (!(pinning_revolute > 0.0) || !(pinning_mean_loss >= 0.0)) {
     return fail("pinning_revolute must be > 0 and pinning_mean_loss >= 0");
   }
+  if (max_passes_after_switch < 0 || !(settle_tolerance > 0.0)) {
+    return fail("max_passes_after_switch must be >= 0 and settle_tolerance > 0");
+  }
   return true;
 }
 
@@ -265,9 +268,10 @@ class ChainFitter {
 
   // Whether the scan pins each revolute joint down: its subtree's Eq. (9)
   // loss at the joint's value moved by the failure bound (RobotFitOptions::
-  // pinning_revolute) must rise by at least pinning_mean_loss per sample on
-  // average over the two sides (within the limits); else the joint is ambiguous with the
-  // moved value as its alternative (a round link nothing below tells).
+  // pinning_revolute) must rise by at least pinning_mean_loss per sample,
+  // on average over the two sides within the limits; else the joint is
+  // ambiguous with the moved value as its alternative (a round link that
+  // nothing below it tells).
   void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
                     const std::vector<double>& q) const {
     for (JointRecord& record : *records) {
@@ -572,12 +576,12 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
     bool switched = false;
     EDGEFIT_RETURN_IF_ERROR(chain.CheckAlternatives(result->T_world_base, &records, &q, &switched));
-    for (int pass = 0; switched && pass < 3; ++pass) {
+    for (int pass = 0; switched && pass < options.max_passes_after_switch; ++pass) {
       const std::vector<double> before = q;
       EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
       double largest = 0.0;
       for (size_t k = 0; k < q.size(); ++k) largest = std::max(largest, std::abs(q[k] - before[k]));
-      switched = largest > 0.01 * M_PI / 180.0;
+      switched = largest > options.settle_tolerance;
     }
   }
   chain.CheckPinning(result->T_world_base, &records, q);

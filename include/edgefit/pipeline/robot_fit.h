@@ -95,16 +95,22 @@ struct RobotFitOptions {
   // whose only tell is a drive cover); a jaw no scanner saw differed by
   // 0.006 mm. The bound is half the smallest right margin.
   double ambiguity_check_loss = 0.002;
-  // A revolute joint moved by pinning_revolute (a failed fit's bound) must
-  // cost at least pinning_mean_loss per sample more [m], else it is
-  // ambiguous. Prismatic joints are not tested: on the bundled gun's jaw (a
-  // rod sliding along itself) the rise at 5 mm ranged from -0.125 to
-  // 0.2 mm/sample over 48 fits whose jaws were within 4 mm, and it was
-  // 0.015 and -0.001 for the two off by more: no bound separates them. The
-  // lowest revolute rise in those fits was 0.096 mm/sample.
+  double ambiguity_mean_loss = 0.00006;
+  // A revolute joint moved by pinning_revolute (a failed fit's bound) either
+  // way must cost on average at least pinning_mean_loss per sample more
+  // [m], else it is ambiguous. In the 69 fits of the bundled table the
+  // lower of the two sides' rises was never below 0.096 mm/sample (so
+  // neither is the mean). Prismatic joints are not tested: on the bundled
+  // gun's jaw (a rod sliding along itself) the lower rise at 5 mm ran from
+  // -0.125 to 0.2 mm/sample over 48 fits whose jaws were within 4 mm, and
+  // was 0.015 and -0.001 for the two off by more: no bound separates them.
   double pinning_revolute = 0.5 * M_PI / 180.0;  // [rad]
   double pinning_mean_loss = 0.00003;
-  double ambiguity_mean_loss = 0.00006;
+  // After a joint takes its alternative value, the subtree pass runs again
+  // over every joint, up to this many times, until none moves by more than
+  // settle_tolerance (rad or m).
+  int max_passes_after_switch = 3;
+  double settle_tolerance = 0.01 * M_PI / 180.0;
 
   static WeightedIcpOptions DefaultBaseIcp();
   static WeightedIcpOptions DefaultJointIcp();
