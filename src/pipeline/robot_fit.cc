@@ -345,9 +345,14 @@ class ChainFitter {
 
   // Prismatic joints keep point-to-point residuals: a part sliding along
   // its axis (a gun's jaw) shows few faces across the axis, and
-  // point-to-plane leaves it free to slide.
+  // point-to-plane leaves it free to slide. Only its tip and shoulder pull
+  // along the axis, so it converges slowly: four times the iterations (the
+  // bundled `home` posture's jaw stopped 10.9 mm off at 60, 0.9 mm at 240).
   static WeightedIcpOptions ForMotion(WeightedIcpOptions options, const LinkMotion& motion) {
-    if (motion.type == LinkMotion::Type::kPrismatic) options.point_to_plane = false;
+    if (motion.type == LinkMotion::Type::kPrismatic) {
+      options.point_to_plane = false;
+      options.max_iterations *= 4;
+    }
     return options;
   }
 
