@@ -4,7 +4,9 @@
 // mesh are cut at the same heights above the floor; their corners (Eq. 7)
 // are matched by RANSAC: two scan corners and two model corners at equal
 // distance at one height give a hypothesis, scored by how many model
-// section points land on scan section points at every height. No manual
+// section points land on scan section points at every height. A round
+// base with few corners may show no pair: then single corners are matched
+// with the yaw on a grid (BaseRoughOptions::single_corner_*). No manual
 // initialisation; an optional box limits the scan to a region.
 //
 // The floor: the most populated 5 mm height bin of the scan points with a
