@@ -90,10 +90,10 @@ struct RobotFitOptions {
   // below it; the lower Eq. (9) loss of the subtree wins, and the joint is
   // ambiguous (not ok) when the two differ by less than ambiguity_mean_loss
   // per sample [m]. Calibrated on the bundled robot's 46 edge-weighted fits
-  // (23 postures, with and without accessories): every one of 66 checks
-  // chose the right value, the smallest margin 0.12 mm (a flipped wrist
-  // whose only tell is a drive cover); a jaw no scanner saw differed by
-  // 0.006 mm. The bound is half the smallest right margin.
+  // (23 postures, with and without accessories): 91 of 92 checks chose the
+  // right value, the smallest margin 0.12 mm (a flipped wrist whose only
+  // tell is a drive cover); the wrong one, a gun's jaw, won by 0.006 mm.
+  // The bound is half the smallest right margin.
   double ambiguity_check_loss = 0.002;
   double ambiguity_mean_loss = 0.00006;
   // A revolute joint moved by pinning_revolute (a failed fit's bound) either
