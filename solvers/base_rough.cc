@@ -185,11 +185,12 @@ Status FitBaseRough(const ScanSet& scans,
     score_total += score_points[k].size();
     occupancy.emplace_back(scan_sections[k].points, options.inlier_distance);
   }
-  auto score = [&](const Eigen::Isometry2d& T) {
+  // Every `stride`-th scoring point (1: all) that lands on the scan.
+  auto score = [&](const Eigen::Isometry2d& T, size_t stride = 1) {
     size_t inliers = 0;
     for (size_t k = 0; k < H; ++k) {
-      for (const Eigen::Vector2d& p : score_points[k]) {
-        inliers += occupancy[k].AnyWithin(T * p, options.inlier_distance);
+      for (size_t j = 0; j < score_points[k].size(); j += stride) {
+        inliers += occupancy[k].AnyWithin(T * score_points[k][j], options.inlier_distance);
       }
     }
     return inliers;
@@ -282,12 +283,7 @@ Status FitBaseRough(const ScanSet& scans,
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(singles.size()); ++i) {
       Single& single = singles[static_cast<size_t>(i)];
-      for (size_t k = 0; k < H; ++k) {
-        for (size_t j = 0; j < score_points[k].size(); j += kSparseStride) {
-          single.sparse +=
-              occupancy[k].AnyWithin(single.T * score_points[k][j], options.inlier_distance);
-        }
-      }
+      single.sparse = score(single.T, kSparseStride);
     }
     std::stable_sort(singles.begin(), singles.end(),
                      [](const Single& a, const Single& b) { return a.sparse > b.sparse; });

@@ -65,8 +65,8 @@ bool RobotFitOptions::IsValid(std::string* error) const {
   if (!(pinning_revolute > 0.0) || !(pinning_mean_loss >= 0.0)) {
     return fail("pinning_revolute must be > 0 and pinning_mean_loss >= 0");
   }
-  if (max_passes_after_switch < 0 || !(settle_tolerance > 0.0)) {
-    return fail("max_passes_after_switch must be >= 0 and settle_tolerance > 0");
+  if (max_passes_after_switch < 0 || !(settle_tolerance_rad > 0.0) || !(settle_tolerance_m > 0.0)) {
+    return fail("max_passes_after_switch must be >= 0 and the settle tolerances > 0");
   }
   return true;
 }
@@ -79,6 +79,20 @@ double NearestZeroTurn(const LinkMotion& motion, double q) {
   if (motion.type != LinkMotion::Type::kRevolute) return q;
   const double nearest_zero = std::remainder(q, 2.0 * M_PI);
   return motion.Clamp(nearest_zero) == nearest_zero ? nearest_zero : q;
+}
+
+// Whether a joint moved from `before` to `after` by more than tolerance_rad
+// (revolute, modulo a turn) or tolerance_m (prismatic).
+bool AnyJointMoved(const KinematicModel& model, const std::vector<double>& before,
+                   const std::vector<double>& after, double tolerance_rad, double tolerance_m) {
+  for (size_t k = 0; k < after.size(); ++k) {
+    const double change = after[k] - before[k];
+    const bool moved = model.joints()[k].type == JointType::kPrismatic
+                           ? std::abs(change) > tolerance_m
+                           : std::abs(std::remainder(change, 2.0 * M_PI)) > tolerance_rad;
+    if (moved) return true;
+  }
+  return false;
 }
 
 double Since(std::chrono::steady_clock::time_point start) {
@@ -155,17 +169,14 @@ class ChainFitter {
     const auto first_symmetric = std::find_if(records->begin(), records->end(),
                                               [](const JointRecord& r) { return r.symmetric; });
     for (int pass = 0; pass < options_.max_resweeps && first_symmetric != records->end(); ++pass) {
-      bool moved = false;
+      const std::vector<double> before = *q;
       for (auto it = first_symmetric; it != records->end(); ++it) {
-        const Joint& j = model_.joints()[static_cast<size_t>(it->joint)];
-        const double before = (*q)[static_cast<size_t>(it->joint)];
         EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &*it, /*resweep=*/true));
-        const double change = (*q)[static_cast<size_t>(it->joint)] - before;
-        moved |= j.type == JointType::kPrismatic ? std::abs(change) > options_.resweep_tolerance_m
-                                                 : std::abs(std::remainder(change, 2.0 * M_PI)) >
-                                                       options_.resweep_tolerance_rad;
       }
-      if (!moved) break;
+      if (!AnyJointMoved(model_, before, *q, options_.resweep_tolerance_rad,
+                         options_.resweep_tolerance_m)) {
+        break;
+      }
     }
     return Status::Ok();
   }
@@ -584,9 +595,8 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     for (int pass = 0; switched && pass < options.max_passes_after_switch; ++pass) {
       const std::vector<double> before = q;
       EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
-      double largest = 0.0;
-      for (size_t k = 0; k < q.size(); ++k) largest = std::max(largest, std::abs(q[k] - before[k]));
-      switched = largest > options.settle_tolerance;
+      switched =
+          AnyJointMoved(model, before, q, options.settle_tolerance_rad, options.settle_tolerance_m);
     }
   }
   chain.CheckPinning(result->T_world_base, &records, q);

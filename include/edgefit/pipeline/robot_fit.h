@@ -108,9 +108,10 @@ struct RobotFitOptions {
   double pinning_mean_loss = 0.00003;
   // After a joint takes its alternative value, the subtree pass runs again
   // over every joint, up to this many times, until none moves by more than
-  // settle_tolerance (rad or m).
+  // settle_tolerance_rad (revolute) or settle_tolerance_m (prismatic).
   int max_passes_after_switch = 3;
-  double settle_tolerance = 0.01 * M_PI / 180.0;
+  double settle_tolerance_rad = 0.01 * M_PI / 180.0;
+  double settle_tolerance_m = 0.0002;
 
   static WeightedIcpOptions DefaultBaseIcp();
   static WeightedIcpOptions DefaultJointIcp();
