@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "costs/axis_point_cost.h"
-#include "costs/point_to_line_cost.h"
 #include "costs/joint_point_to_plane_cost.h"
+#include "costs/point_to_line_cost.h"
 #include "costs/point_to_plane_cost.h"
 #include "costs/point_to_plane_penalty_cost.h"
 #include "costs/point_to_point_cost.h"
@@ -27,8 +27,8 @@ namespace {
 // Eq. (10): the axis points a, b of the child must stay where the parent
 // puts them (a0 = T_world_joint a, b0 = T_world_joint b: a rotation about
 // the axis leaves its points in place).
-void AddRevolutePenalties(const IcpStepInput& input, double lambda,
-                          IcpParameters* parameters, ceres::Problem* problem) {
+void AddRevolutePenalties(const IcpStepInput& input, double lambda, IcpParameters* parameters,
+                          ceres::Problem* problem) {
   const LinkMotion& motion = *input.motion;
   for (const double side : {-1.0, 1.0}) {
     const Eigen::Vector3d a_link =
@@ -42,8 +42,8 @@ void AddRevolutePenalties(const IcpStepInput& input, double lambda,
 // Eq. (14): the axis points a, b stay on the parent's joint line L; the
 // off-axis point c stays on the plane P spanned by L and c's offset, which
 // locks the rotation about the axis.
-void AddPrismaticPenalties(const IcpStepInput& input, double lambda,
-                           IcpParameters* parameters, ceres::Problem* problem) {
+void AddPrismaticPenalties(const IcpStepInput& input, double lambda, IcpParameters* parameters,
+                           ceres::Problem* problem) {
   const LinkMotion& motion = *input.motion;
   const Eigen::Vector3d& axis = motion.axis_joint;
   const Eigen::Vector3d l0_world = motion.T_world_joint.translation();
@@ -51,8 +51,7 @@ void AddPrismaticPenalties(const IcpStepInput& input, double lambda,
   for (const double side : {-1.0, 1.0}) {
     const Eigen::Vector3d a_link = input.axis_center_link + side * input.axis_half_span * axis;
     problem->AddResidualBlock(PointToLineCost::Create(a_link, l0_world, l_world, lambda), nullptr,
-                              parameters->rotation_world_link,
-                              parameters->translation_world_link);
+                              parameters->rotation_world_link, parameters->translation_world_link);
   }
   const Eigen::Vector3d u = axis.unitOrthogonal();
   const Eigen::Vector3d c_link = input.axis_center_link + input.axis_half_span * u;
@@ -84,10 +83,14 @@ bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* 
     const Eigen::Vector3d q_world = scan.PointWorld(cell);
     const double w_edge = options.uniform_weights ? 1.0 : static_cast<double>(m.weight);
     total_weight += w_edge;
-    // The target normal (point_to_plane), when the edge stage has one.
+    // The plane's normal (point_to_plane): the sample's (PlaneNormals::kModel)
+    // or the target's, when the edge stage has one.
     bool has_normal = false;
     Eigen::Vector3d n_world;
-    if (options.point_to_plane) {
+    if (options.point_to_plane && input.n_link != nullptr) {
+      has_normal = true;
+      n_world = input.R_world_link * (*input.n_link)[static_cast<size_t>(m.source)].cast<double>();
+    } else if (options.point_to_plane) {
       const Eigen::Vector3f& n_scanner =
           (*input.normals_scanner)[static_cast<size_t>(m.scan)][cell];
       has_normal = !std::isnan(n_scanner.x());

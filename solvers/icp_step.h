@@ -20,10 +20,15 @@
 namespace edgefit {
 
 struct IcpStepInput {
-  const std::vector<Eigen::Vector3f>* p_link = nullptr;           // CAD samples, link frame
+  const std::vector<Eigen::Vector3f>* p_link = nullptr;          // CAD samples, link frame
   const std::vector<Correspondence>* correspondences = nullptr;  // gated matches
   const ScanSet* scans = nullptr;
   const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner = nullptr;  // or nullptr
+  // PlaneNormals::kModel: the samples' normals (link frame, parallel to
+  // p_link) and the rotation that poses them for this solve; nullptr: the
+  // scan's normals.
+  const std::vector<Eigen::Vector3f>* n_link = nullptr;
+  Eigen::Matrix3d R_world_link = Eigen::Matrix3d::Identity();
   const LinkMotion* motion = nullptr;
   const WeightedIcpOptions* options = nullptr;
   ceres::LossFunction* loss = nullptr;  // borrowed, shared by the data residuals

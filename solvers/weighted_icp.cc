@@ -121,9 +121,10 @@ void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_wor
                                 WeightedIcpOptions::Visibility visibility, double gate) {
   const Eigen::Matrix3d R = T_world_link.linear();
   const Eigen::Vector3d& t = T_world_link.translation();
-  const bool filter = visibility != WeightedIcpOptions::Visibility::kAll &&
-                      samples.normals.size() == samples.points.size();
+  const bool has_normals = samples.normals.size() == samples.points.size();
+  const bool filter = visibility != WeightedIcpOptions::Visibility::kAll && has_normals;
   p_used_link_.clear();
+  n_used_link_.clear();
   q_world_.clear();
   for (size_t i = 0; i < samples.points.size(); ++i) {
     const Eigen::Vector3d q = R * samples.points[i].cast<double>() + t;
@@ -133,6 +134,7 @@ void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_wor
       if (visibility_.BestView(q, n, gate, facing_only) != ScanView::kSeen) continue;
     }
     p_used_link_.push_back(samples.points[i]);
+    if (has_normals) n_used_link_.push_back(samples.normals[i]);
     q_world_.push_back(q.cast<float>());
   }
 }
@@ -146,8 +148,13 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
   if (!options.IsValid(&error)) return Status::Error("weighted ICP: " + error);
   const std::vector<Eigen::Vector3f>& p_link = samples.points;
   if (p_link.empty()) return Status::Error("weighted ICP: the link has no CAD samples");
-  if (options.point_to_plane && normals_scanner_ == nullptr) {
+  const bool model_normals =
+      options.point_to_plane && options.plane_normals == WeightedIcpOptions::PlaneNormals::kModel;
+  if (options.point_to_plane && !model_normals && normals_scanner_ == nullptr) {
     return Status::Error("weighted ICP: point_to_plane needs target normals");
+  }
+  if (model_normals && samples.normals.size() != p_link.size()) {
+    return Status::Error("weighted ICP: point_to_plane with model normals needs sample normals");
   }
   const bool joint_space = SolvesJointValue(motion, options);
   std::unique_ptr<ceres::LossFunction> loss;
@@ -167,6 +174,7 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
   }
   IcpStepInput input;
   input.p_link = &p_used_link_;
+  input.n_link = model_normals ? &n_used_link_ : nullptr;
   input.correspondences = &correspondences_;
   input.scans = scans_;
   input.normals_scanner = normals_scanner_;
@@ -185,7 +193,8 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
   SetPoseParameters(T_world_link, &parameters);
 
   Eigen::AlignedBox3d crop_world;
-  for (int i = 0; i < 8; ++i) crop_world.extend(T_world_link * corners_link[static_cast<size_t>(i)]);
+  for (int i = 0; i < 8; ++i)
+    crop_world.extend(T_world_link * corners_link[static_cast<size_t>(i)]);
   const double grow = options.correspondence.max_distance + options.crop_margin;
   crop_world.min().array() -= grow;
   crop_world.max().array() += grow;
@@ -200,6 +209,7 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
       summary->stop_reason = IcpStopReason::kTooFewCorrespondences;
       break;
     }
+    input.R_world_link = T_world_link.linear();
     if (!SolveIcpStep(input, &parameters, &summary->final_cost)) {
       summary->stop_reason = IcpStopReason::kSolverFailed;
       break;
@@ -248,10 +258,10 @@ void WeightedIcp::Measure(const SurfaceSamples& samples, const Pose& T_world_lin
     sum_squared += static_cast<double>(m.distance) * static_cast<double>(m.distance);
   }
   summary->inliers = correspondences_.size();
-  summary->inlier_share = summary->visible_points > 0
-                              ? static_cast<double>(summary->inliers) /
-                                    static_cast<double>(summary->visible_points)
-                              : 0.0;
+  summary->inlier_share =
+      summary->visible_points > 0
+          ? static_cast<double>(summary->inliers) / static_cast<double>(summary->visible_points)
+          : 0.0;
   summary->rms =
       summary->inliers > 0 ? std::sqrt(sum_squared / static_cast<double>(summary->inliers)) : 0.0;
 }

@@ -73,11 +73,22 @@ struct WeightedIcpOptions {
   // (metres for w_edge = 1; a residual carries sqrt(w_edge) |R p + t - q|).
   std::string loss = "trivial";
   double loss_scale = 0.005;
-  // Point-to-plane data residuals using the target normals given to the
-  // engine (from the edge stage); cells without a normal fall back to
-  // point-to-point. Both parameterisations (joint_point_to_plane_cost.h in
-  // joint space).
+  // Point-to-plane data residuals n^T (R p + t - q) instead of Eq. (8)'s
+  // point-to-point ones. Both parameterisations (joint_point_to_plane_cost.h
+  // in joint space).
   bool point_to_plane = false;
+  // Where the point-to-plane normal n comes from:
+  //   kModel  the CAD sample's own normal (SurfaceSamples::normals, needed),
+  //           posed with the estimate at the start of each ICP iteration
+  //           and held fixed within its solve: exact up to the mesh;
+  //   kScan   the target normal the engine was given (the edge stage's PCA
+  //           normals; cells without one fall back to point-to-point).
+  //           Within a few mm of an edge these are tilted towards the other
+  //           face, and those are the cells where Eq. (6) puts w_high:
+  //           edge-weighted fits of the bundled robot were 1.6x less
+  //           accurate with them (BENCHMARK.md, "Robot fit").
+  enum class PlaneNormals { kModel, kScan };
+  PlaneNormals plane_normals = PlaneNormals::kModel;
   // Constraint of links on joints (ignored for LinkMotion::kFree).
   JointParameterization parameterization = JointParameterization::kJointSpace;
   // kPoseWithPenalties: weight of the Eq. (10) / (14) penalties relative to
@@ -168,8 +179,7 @@ class WeightedIcp {
   // samples, point_to_plane without normals.
   // A fit that stops early is no error: see summary->stop_reason.
   Status Fit(const SurfaceSamples& samples, const LinkMotion& motion,
-             const WeightedIcpOptions& options, LinkState* state,
-             WeightedIcpSummary* summary);
+             const WeightedIcpOptions& options, LinkState* state, WeightedIcpSummary* summary);
 
   // The quality fields of a summary (visible_points, inliers, inlier_share,
   // rms) for the samples at T_world_link with the final gate, without
@@ -192,8 +202,9 @@ class WeightedIcp {
                const Eigen::AlignedBox3d& crop_world, WeightedIcpSummary* summary);
   ScanVisibility visibility_;
   // Buffers reused between iterations and fits.
-  std::vector<Eigen::Vector3f> p_used_link_;    // the samples of the iteration
-  std::vector<Eigen::Vector3f> q_world_;        // the same, posed
+  std::vector<Eigen::Vector3f> p_used_link_;  // the samples of the iteration
+  std::vector<Eigen::Vector3f> n_used_link_;  // their normals, when the samples have them
+  std::vector<Eigen::Vector3f> q_world_;      // the same, posed
   std::vector<Correspondence> correspondences_;
 };
 

@@ -4,6 +4,8 @@
 // noise. Fails if accuracy regresses (issue bar on the full 1.7 mm scenes:
 // BENCHMARK.md), if the fit depends on the thread count, or if a scan
 // without the robot gets a confident answer.
+#include "edgefit/pipeline/robot_fit.h"
+
 #include <glog/logging.h>
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -17,7 +19,6 @@
 #include "edgefit/model/joint_values.h"
 #include "edgefit/pipeline/fit_errors.h"
 #include "edgefit/pipeline/model_points.h"
-#include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/truth.h"
 #include "edgefit/scanner/virtual_scanner.h"
@@ -34,7 +35,7 @@ struct RobotScene {
   KinematicModel model;
   std::vector<double> q;
   Pose T_world_base = Pose::Identity();
-  ScanSet scans;        // robot, gun, accessories, floor, clutter
+  ScanSet scans;                              // robot, gun, accessories, floor, clutter
   std::vector<std::vector<uint16_t>> labels;  // of scans, per cell (scene.h)
   ScanSet empty_scans;  // the same place without the robot and its accessories
 };
@@ -45,7 +46,8 @@ const RobotScene& GetScene() {
     const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
     AttachSpec gun;
     CHECK(ParseAttachSpec(dir + "weld_gun.urdf@tool0", &gun).ok());
-    CHECK(LoadModelWithAttachments(dir + "robot.urdf", {gun}, ModelLoadOptions(), &out->model).ok());
+    CHECK(
+        LoadModelWithAttachments(dir + "robot.urdf", {gun}, ModelLoadOptions(), &out->model).ok());
     out->q = out->model.ZeroJoints();
     CHECK(ParseJointAssignments("joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,"
                                 "joint_6=0.6,gun_joint=0.09",
@@ -90,8 +92,8 @@ FitErrors Fit(const ScanSet& scans, bool uniform, RobotFitResult* fit) {
   const Status status = FitRobot(s.model, scans, options, nullptr, fit);
   EXPECT_TRUE(status.ok()) << status.message();
   FitErrors errors;
-  CHECK(CompareWithTruth(s.model, fit->q, fit->T_world_base,
-                         NamedJointValues(s.model, s.q), s.T_world_base, &errors)
+  CHECK(CompareWithTruth(s.model, fit->q, fit->T_world_base, NamedJointValues(s.model, s.q),
+                         s.T_world_base, &errors)
             .ok());
   return errors;
 }
@@ -108,7 +110,7 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
     std::printf("  %-24s error %.4f %s\n", e.name.c_str(),
                 e.prismatic ? e.error * 1e3 : e.error / kDeg, e.prismatic ? "mm" : "deg");
     if (e.prismatic) {  // the gun's electrode: a thin rod along its own axis
-      EXPECT_LT(e.error, 0.003) << e.name;
+      EXPECT_LT(e.error, 0.002) << e.name;
       continue;
     }
     sum += e.error;
@@ -123,14 +125,16 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
     }
     EXPECT_FALSE(b.ambiguous) << b.link;
   }
-  // Measured at 4 mm spacing: base 0.040 mm, 0.019 deg; revolute joints
-  // mean 0.050 deg (the balancer's included), max 0.20 deg (joint_5); gun
-  // 1.6 mm. About twice that fails. The issue's bar (0.05 / 0.15 deg) is for
-  // the 1.7 mm scans of BENCHMARK.md.
-  EXPECT_LT(errors.base_translation, 0.0005);
-  EXPECT_LT(errors.base_rotation, 0.04 * kDeg);
-  EXPECT_LT(sum / revolute, 0.1 * kDeg);
-  EXPECT_LT(max, 0.3 * kDeg);
+  // Measured at 4 mm spacing: base 0.033 mm, 0.012 deg; revolute joints
+  // mean 0.0085 deg (the balancer's included), max 0.014 deg (joint_4); gun
+  // 0.59 mm. (Before point-to-plane residuals took the CAD normals: base
+  // 0.040 mm, mean 0.050 deg, max 0.18 deg, gun 1.0 mm.) About three times
+  // that fails. The issue's bar (0.05 / 0.15 deg) is for the 1.7 mm scans of
+  // BENCHMARK.md.
+  EXPECT_LT(errors.base_translation, 0.0001);
+  EXPECT_LT(errors.base_rotation, 0.03 * kDeg);
+  EXPECT_LT(sum / revolute, 0.025 * kDeg);
+  EXPECT_LT(max, 0.05 * kDeg);
 }
 
 TEST(RobotFitTest, SameResultForAnyThreadCount) {

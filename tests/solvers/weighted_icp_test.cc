@@ -51,9 +51,9 @@ Synthetic MakeSynthetic(const Pose& T_world_link, double sigma) {
 
 WeightedIcpOptions KdTreeOptions() {
   WeightedIcpOptions options;
-  options.correspondence.use_lattice = false;  // unorganized synthetic cloud
+  options.correspondence.use_lattice = false;                 // unorganized synthetic cloud
   options.visibility = WeightedIcpOptions::Visibility::kAll;  // all samples are in the target
-  options.final_gate = 0.05;  // no outliers: a fixed gate
+  options.final_gate = 0.05;                                  // no outliers: a fixed gate
   options.max_iterations = 100;
   options.convergence_displacement = 1e-9;  // recovery to 1e-6 is asserted
   return options;
@@ -134,15 +134,14 @@ TEST_P(JointRecoveryTest, RecoveredExactlyWithoutNoise) {
 
 INSTANTIATE_TEST_SUITE_P(
     Joints, JointRecoveryTest,
-    ::testing::Values(
-        JointCase{"RevoluteJointSpace", LinkMotion::Type::kRevolute,
-                  JointParameterization::kJointSpace},
-        JointCase{"RevolutePosePenalty", LinkMotion::Type::kRevolute,
-                  JointParameterization::kPoseWithPenalties},
-        JointCase{"PrismaticJointSpace", LinkMotion::Type::kPrismatic,
-                  JointParameterization::kJointSpace},
-        JointCase{"PrismaticPosePenalty", LinkMotion::Type::kPrismatic,
-                  JointParameterization::kPoseWithPenalties}),
+    ::testing::Values(JointCase{"RevoluteJointSpace", LinkMotion::Type::kRevolute,
+                                JointParameterization::kJointSpace},
+                      JointCase{"RevolutePosePenalty", LinkMotion::Type::kRevolute,
+                                JointParameterization::kPoseWithPenalties},
+                      JointCase{"PrismaticJointSpace", LinkMotion::Type::kPrismatic,
+                                JointParameterization::kJointSpace},
+                      JointCase{"PrismaticPosePenalty", LinkMotion::Type::kPrismatic,
+                                JointParameterization::kPoseWithPenalties}),
     [](const ::testing::TestParamInfo<JointCase>& info) { return info.param.name; });
 
 // With noise sigma per axis on N targets, least squares with the right
@@ -204,28 +203,34 @@ TEST(WeightedIcpTest, SameResultForAnyThreadCount) {
   EXPECT_EQ(one.summary.final_cost, two.summary.final_cost);
 }
 
-// Point-to-plane with the true target normals converges to the same pose.
+using PlaneNormals = WeightedIcpOptions::PlaneNormals;
+
+// Point-to-plane with the samples' own normals or the true target normals
+// converges to the same pose.
 TEST(WeightedIcpTest, PointToPlaneRecoversFreePose) {
   const Synthetic s = MakeSynthetic(kTrueFreePose, 0.0);
   std::vector<std::vector<Eigen::Vector3f>> normals(1);
   for (const Eigen::Vector3f& n : s.samples.normals) {
     normals[0].push_back((kTrueFreePose.linear() * n.cast<double>()).cast<float>());
   }
-  CorrespondenceSearch search(&s.scans, &s.weights);
-  WeightedIcp icp(&s.scans, &search, &normals);
-  WeightedIcpOptions options = KdTreeOptions();
-  options.point_to_plane = true;
-  LinkState state;
-  state.T_world_link = kTrueFreePose * PoseFromXyzRpy({0.01, -0.01, 0.005}, {0.02, 0.01, -0.02});
-  WeightedIcpSummary summary;
-  ASSERT_TRUE(icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary).ok());
-  EXPECT_EQ(summary.stop_reason, IcpStopReason::kConverged) << summary.BriefReport();
-  EXPECT_LT(TranslationError(state.T_world_link, kTrueFreePose), 1e-6);
-  EXPECT_LT(RotationErrorRad(state.T_world_link, kTrueFreePose), 1e-6);
+  for (const PlaneNormals source : {PlaneNormals::kModel, PlaneNormals::kScan}) {
+    CorrespondenceSearch search(&s.scans, &s.weights);
+    WeightedIcp icp(&s.scans, &search, source == PlaneNormals::kScan ? &normals : nullptr);
+    WeightedIcpOptions options = KdTreeOptions();
+    options.point_to_plane = true;
+    options.plane_normals = source;
+    LinkState state;
+    state.T_world_link = kTrueFreePose * PoseFromXyzRpy({0.01, -0.01, 0.005}, {0.02, 0.01, -0.02});
+    WeightedIcpSummary summary;
+    ASSERT_TRUE(icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary).ok());
+    EXPECT_EQ(summary.stop_reason, IcpStopReason::kConverged) << summary.BriefReport();
+    EXPECT_LT(TranslationError(state.T_world_link, kTrueFreePose), 1e-6);
+    EXPECT_LT(RotationErrorRad(state.T_world_link, kTrueFreePose), 1e-6);
+  }
 }
 
-// Joint-space point-to-plane (joint_point_to_plane_cost.h) with the true
-// target normals recovers revolute and prismatic joints exactly, in fewer
+// Joint-space point-to-plane (joint_point_to_plane_cost.h) with either
+// normal source recovers revolute and prismatic joints exactly, in fewer
 // iterations than point-to-point.
 TEST(WeightedIcpTest, PointToPlaneRecoversJoints) {
   for (const LinkMotion::Type type : {LinkMotion::Type::kRevolute, LinkMotion::Type::kPrismatic}) {
@@ -241,16 +246,22 @@ TEST(WeightedIcpTest, PointToPlaneRecoversJoints) {
     CorrespondenceSearch search(&s.scans, &s.weights);
     WeightedIcp icp(&s.scans, &search, &normals);
     WeightedIcpOptions options = KdTreeOptions();
-    LinkState point_state, plane_state;
-    point_state.q = plane_state.q = q_true + (revolute ? 4.0 * kDeg : 0.03);
-    WeightedIcpSummary point, plane;
+    LinkState point_state;
+    point_state.q = q_true + (revolute ? 4.0 * kDeg : 0.03);
+    WeightedIcpSummary point;
     ASSERT_TRUE(icp.Fit(s.samples, motion, options, &point_state, &point).ok());
     options.point_to_plane = true;
-    ASSERT_TRUE(icp.Fit(s.samples, motion, options, &plane_state, &plane).ok());
-    EXPECT_EQ(plane.stop_reason, IcpStopReason::kConverged) << plane.BriefReport();
-    EXPECT_NEAR(plane_state.q, q_true, 1e-6);
-    EXPECT_LE(plane.iterations, point.iterations)
-        << "point-to-plane " << plane.BriefReport() << " vs " << point.BriefReport();
+    for (const PlaneNormals source : {PlaneNormals::kModel, PlaneNormals::kScan}) {
+      options.plane_normals = source;
+      LinkState plane_state;
+      plane_state.q = q_true + (revolute ? 4.0 * kDeg : 0.03);
+      WeightedIcpSummary plane;
+      ASSERT_TRUE(icp.Fit(s.samples, motion, options, &plane_state, &plane).ok());
+      EXPECT_EQ(plane.stop_reason, IcpStopReason::kConverged) << plane.BriefReport();
+      EXPECT_NEAR(plane_state.q, q_true, 1e-6);
+      EXPECT_LE(plane.iterations, point.iterations)
+          << "point-to-plane " << plane.BriefReport() << " vs " << point.BriefReport();
+    }
   }
 }
 
@@ -279,9 +290,15 @@ TEST(WeightedIcpTest, RejectsBadOptionsAndInputs) {
   EXPECT_FALSE(icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary).ok());
   options = KdTreeOptions();
   EXPECT_FALSE(icp.Fit(SurfaceSamples(), LinkMotion::Free(), options, &state, &summary).ok());
-  options.point_to_plane = true;  // no normals given to the engine
+  options.point_to_plane = true;
+  options.plane_normals = PlaneNormals::kScan;  // no normals given to the engine
   status = icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary);
-  EXPECT_NE(status.message().find("normals"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("target normals"), std::string::npos) << status.message();
+  options.plane_normals = PlaneNormals::kModel;
+  SurfaceSamples bare = s.samples;
+  bare.normals.clear();
+  status = icp.Fit(bare, LinkMotion::Free(), options, &state, &summary);
+  EXPECT_NE(status.message().find("sample normals"), std::string::npos) << status.message();
   JointParameterization parameterization;
   EXPECT_TRUE(ParseJointParameterization("pose_penalty", &parameterization).ok());
   EXPECT_EQ(parameterization, JointParameterization::kPoseWithPenalties);
