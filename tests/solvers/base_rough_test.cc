@@ -12,13 +12,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "correspondence/correspondence_test_util.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/primitive_meshes.h"
-#include "edgefit/scanner/scanner_placement.h"
-#include "edgefit/scanner/virtual_scanner.h"
-#include "edgefit/scene/scene.h"
 #include "solvers/icp_test_util.h"
+#include "solvers/link_scan_test_util.h"
 
 namespace edgefit {
 namespace {
@@ -46,23 +43,7 @@ struct BaseScene {
 const BaseScene& GetScene() {
   static BaseScene* scene = [] {
     auto* out = new BaseScene;
-    Scene scene;
-    scene.meshes.push_back(testing_util::Floor());
-    SceneMesh base;
-    base.mesh_world.Append(RoundBase(), kTrueBasePose);
-    base.label = LinkLabel(0);
-    base.link = 0;
-    base.kind = "link";
-    scene.meshes.push_back(base);
-    const Eigen::AlignedBox3d box = base.mesh_world.BoundingBox();
-    ScannerPlacementOptions placement;
-    placement.min_distance = 1.5;
-    placement.max_distance = 2.5;
-    placement.seed = 5;
-    VirtualScanOptions options;  // 1.7 mm, 1 mm noise
-    options.asset_box_world = box;
-    VirtualScan scan;
-    CHECK(ScanScene(scene, PlaceScanners(box, placement), options, &scan).ok());
+    VirtualScan scan = testing_util::ScanLinkOnFloor(RoundBase(), kTrueBasePose, {}, 5);
     out->scans = std::move(scan.scans);
     CHECK(DetectEdges(out->scans, EdgeDetectionOptions(), &out->edges).ok());
     return out;

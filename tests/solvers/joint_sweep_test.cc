@@ -18,9 +18,9 @@
 #include "edgefit/correspondence/correspondence_search.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "edgefit/model/surface_sampler.h"
-#include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
 #include "solvers/icp_test_util.h"
+#include "solvers/link_scan_test_util.h"
 
 namespace edgefit {
 namespace {
@@ -47,26 +47,11 @@ struct SweepScene {
 // The mesh on Joint() at kTrueAngle, scanned noise-free at 3 mm.
 SweepScene ScanLink(const TriangleMesh& mesh) {
   SweepScene out;
-  Scene scene;
-  scene.meshes.push_back(testing_util::Floor());
-  SceneMesh link;
-  link.mesh_world.Append(mesh, Joint().PoseAt(kTrueAngle));
-  link.label = LinkLabel(0);
-  link.link = 0;
-  link.kind = "link";
-  scene.meshes.push_back(link);
-  Eigen::AlignedBox3d box;
-  for (const Eigen::Vector3d& v : link.mesh_world.vertices) box.extend(v);
-  ScannerPlacementOptions placement;
-  placement.min_distance = 1.5;
-  placement.max_distance = 2.5;
-  placement.seed = 4;
   VirtualScanOptions options;
   options.spacing = 0.003;
   options.noise_sigma = 0.0;
-  options.asset_box_world = box;
-  VirtualScan scan;
-  CHECK(ScanScene(scene, PlaceScanners(box, placement), options, &scan).ok());
+  VirtualScan scan =
+      testing_util::ScanLinkOnFloor(mesh, Joint().PoseAt(kTrueAngle), {}, 4, options);
   out.scans = std::move(scan.scans);
   out.samples = SampleMeshSurface(mesh, 0.012, 5);
   return out;

@@ -15,11 +15,11 @@
 #include "correspondence/correspondence_test_util.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/surface_sampler.h"
-#include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
 #include "edgefit/scene/scene.h"
 #include "edgefit/scene/tube_mesh.h"
 #include "solvers/icp_test_util.h"
+#include "solvers/link_scan_test_util.h"
 #include "solvers/weighted_icp.h"
 
 namespace edgefit {
@@ -38,43 +38,27 @@ const Pose kTrueLinkPose = PoseFromXyzRpy({0.3, -0.2, 1.1}, {0.1, -0.05, 0.6});
 struct TubeScene {
   ScanSet scans;
   EdgeDetectionResult edges;
-  SurfaceSamples samples;  // link frame
+  SurfaceSamples samples;      // link frame
   double outlier_share = 0.0;  // tube points / (tube + link points)
 };
 
 const TubeScene& GetScene() {
   static TubeScene* scene = [] {
     auto* out = new TubeScene;
-    Scene scene;
-    scene.meshes.push_back(testing_util::Floor());
-    SceneMesh link;
-    link.mesh_world.Append(LinkMesh(), kTrueLinkPose);
-    link.label = LinkLabel(0);
-    link.link = 0;
-    link.kind = "link";
-    scene.meshes.push_back(link);
     // The cable (link frame): along the top of the long box, then up the
     // inner face of the upright one, both ends hanging free.
     const double r = kTubeRadius;
     const std::vector<Eigen::Vector3d> control = {
-        {-0.16, 0.02, 0.02 + r}, {-0.08, 0.02, 0.05 + r}, {0.08, 0.03, 0.05 + r},
-        {0.20 - r, 0.03, 0.08 + r}, {0.20 - r, 0.02, 0.28}, {0.14, 0.02, 0.46}, {0.02, 0.0, 0.50}};
+        {-0.16, 0.02, 0.02 + r},    {-0.08, 0.02, 0.05 + r}, {0.08, 0.03, 0.05 + r},
+        {0.20 - r, 0.03, 0.08 + r}, {0.20 - r, 0.02, 0.28},  {0.14, 0.02, 0.46},
+        {0.02, 0.0, 0.50}};
     SceneMesh tube;
     tube.mesh_world.Append(MakeTubeMesh(CatmullRomCurve(control, 0.005), r, 24), kTrueLinkPose);
     tube.label = kLabelAccessory;
     tube.kind = "harness";
-    scene.meshes.push_back(tube);
 
-    Eigen::AlignedBox3d box;
-    for (const Eigen::Vector3d& v : link.mesh_world.vertices) box.extend(v);
-    ScannerPlacementOptions placement;
-    placement.min_distance = 1.5;
-    placement.max_distance = 2.5;
-    placement.seed = 3;
-    VirtualScanOptions options;  // 1.7 mm, 1 mm noise
-    options.asset_box_world = box;
-    VirtualScan scan;
-    CHECK(ScanScene(scene, PlaceScanners(box, placement), options, &scan).ok());
+    VirtualScan scan =  // 1.7 mm, 1 mm noise
+        testing_util::ScanLinkOnFloor(LinkMesh(), kTrueLinkPose, {tube}, 3);
     size_t link_points = 0, tube_points = 0;
     for (const std::vector<uint16_t>& labels : scan.labels) {
       for (const uint16_t label : labels) {
@@ -125,8 +109,8 @@ Errors FitLink(bool uniform_weights, bool fixed_gate) {
 
 TEST(TubeOutlierTest, TubeIsAboutThirtyPercentAndNotEdges) {
   const TubeScene& s = GetScene();
-  std::printf("  tube share of link + tube points: %.3f; %zu edge points of %zu\n",
-              s.outlier_share, s.edges.edge_points, s.edges.points);
+  std::printf("  tube share of link + tube points: %.3f; %zu edge points of %zu\n", s.outlier_share,
+              s.edges.edge_points, s.edges.points);
   EXPECT_GT(s.outlier_share, 0.25);
   EXPECT_LT(s.outlier_share, 0.40);
 }
