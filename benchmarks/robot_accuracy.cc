@@ -41,6 +41,9 @@ DEFINE_int32(random, 20, "Random postures (RandomJointValuesAboveFloor) after th
 DEFINE_string(accessories, "without,with", "Scenes: without and/or with accessories.");
 DEFINE_string(weighting, "edge,uniform", "Fits: edge and/or uniform weights.");
 DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (edge fits).");
+DEFINE_string(icp_visibility, "seen",
+              "Which CAD samples the ICPs use (WeightedIcpOptions::visibility): seen (facing a "
+              "scanner and not behind the scan), facing (facing a scanner) or all.");
 DEFINE_double(spacing_mm, 1.7, "Scan point spacing at the asset [mm].");
 DEFINE_double(noise_mm, 1.0, "Range noise sigma [mm].");
 DEFINE_int32(scanners, 3, "Scanners around the robot.");
@@ -97,6 +100,13 @@ double Mean(const std::vector<double>& values) {
   double sum = 0.0;
   for (const double v : values) sum += v;
   return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
+WeightedIcpOptions::Visibility IcpVisibility(const std::string& name) {
+  if (name == "all") return WeightedIcpOptions::Visibility::kAll;
+  if (name == "facing") return WeightedIcpOptions::Visibility::kFacing;
+  CHECK(name == "seen") << "--icp_visibility: seen, facing or all, not '" << name << "'";
+  return WeightedIcpOptions::Visibility::kSeen;
 }
 
 // The scan of a case, as the flags set it.
@@ -255,6 +265,8 @@ int Run() {
         RobotFitOptions options;
         options.uniform_weights = weighting == "uniform";
         options.edges.w_high = FLAGS_w_high;
+        options.base_icp.visibility = options.joint_icp.visibility =
+            options.subtree_icp.visibility = IcpVisibility(FLAGS_icp_visibility);
         RobotFitResult fit;
         ProgressFn progress;
         if (FLAGS_progress)

@@ -5,8 +5,10 @@
 #include <glog/logging.h>
 
 #include <cmath>
+#include <memory>
 
 #include "costs/axis_point_cost.h"
+#include "costs/joint_batch_cost.h"
 #include "costs/joint_point_to_plane_cost.h"
 #include "costs/point_to_line_cost.h"
 #include "costs/point_to_plane_cost.h"
@@ -75,6 +77,16 @@ bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* 
   problem_options.disable_all_safety_checks = true;  // blocks are built right here
   ceres::Problem problem(problem_options);
 
+  // Joint space under the trivial loss: every data residual in one block
+  // (costs/joint_batch_cost.h); the same problem, solved without the set-up
+  // of a block per correspondence.
+  std::unique_ptr<JointBatchCost> batch;
+  if (joint_space && options.loss == "trivial") {
+    batch = std::make_unique<JointBatchCost>(motion.type == LinkMotion::Type::kRevolute
+                                                 ? JointBatchCost::Motion::kRevolute
+                                                 : JointBatchCost::Motion::kPrismatic,
+                                             motion.T_world_joint, motion.axis_joint);
+  }
   double total_weight = 0.0;
   for (const Correspondence& m : *input.correspondences) {
     const OrganizedScan& scan = input.scans->scans[static_cast<size_t>(m.scan)];
@@ -95,6 +107,14 @@ bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* 
           (*input.normals_scanner)[static_cast<size_t>(m.scan)][cell];
       has_normal = !std::isnan(n_scanner.x());
       if (has_normal) n_world = scan.T_world_scanner().linear() * n_scanner.cast<double>();
+    }
+    if (batch != nullptr) {
+      if (has_normal) {
+        batch->AddPlane(p_link, q_world, n_world, w_edge);
+      } else {
+        batch->AddPoint(p_link, q_world, w_edge);
+      }
+      continue;
     }
     if (joint_space) {
       ceres::CostFunction* cost = nullptr;
@@ -121,6 +141,9 @@ bool SolveIcpStep(const IcpStepInput& input, IcpParameters* parameters, double* 
                              parameters->translation_world_link);
   }
 
+  if (batch != nullptr && batch->num_residuals() > 0) {
+    problem.AddResidualBlock(batch.release(), nullptr, &parameters->q);
+  }
   if (joint_space) {
     if (motion.has_limits) {
       problem.SetParameterLowerBound(&parameters->q, 0, motion.lower);

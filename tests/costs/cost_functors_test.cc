@@ -1,6 +1,7 @@
 // Every cost functor in costs/: autodiff Jacobians against Ridders numeric
-// differentiation at seeded random poses/points, hand-computed residuals
-// (zero at the true pose, sqrt(weight) scaling), and small end-to-end solves.
+// differentiation at seeded random poses/points (the analytic JointBatchCost
+// against the autodiff functors it batches), hand-computed residuals (zero
+// at the true pose, sqrt(weight) scaling), and small end-to-end solves.
 #include <ceres/ceres.h>
 #include <ceres/numeric_diff_cost_function.h>
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "costs/axis_point_cost.h"
+#include "costs/joint_batch_cost.h"
 #include "costs/joint_point_to_plane_cost.h"
 #include "costs/point_to_line_cost.h"
 #include "costs/point_to_plane_cost.h"
@@ -333,6 +335,57 @@ TEST(CostResidualTest, PrismaticPoint) {
                                            kP, Vector3d(1, 3, 1), 4.0),
                 {{2.0}}),
       {0.0, 0.0, 0.0});
+}
+
+// JointBatchCost holds the per-correspondence joint-space residuals in one
+// block: its residuals and analytic Jacobian equal, row for row, those of
+// the autodiff functors it stands for (themselves checked against numeric
+// differentiation above).
+TEST(JointBatchCostTest, EqualsThePerCorrespondenceFunctors) {
+  std::mt19937 rng(17);
+  for (const bool revolute : {true, false}) {
+    const Eigen::Isometry3d T_world_joint = RandomPose(rng);
+    const Vector3d axis = RandomVector(rng, 1.0);
+    JointBatchCost batch(
+        revolute ? JointBatchCost::Motion::kRevolute : JointBatchCost::Motion::kPrismatic,
+        T_world_joint, axis);
+    std::vector<std::unique_ptr<ceres::CostFunction>> singles;
+    for (int i = 0; i < 6; ++i) {
+      const Vector3d p = RandomVector(rng, 0.5), q = RandomVector(rng, 2.0);
+      const Vector3d n = RandomVector(rng, 1.0);
+      const double w = i % 3 == 0 ? 10.0 : 1.0;
+      const bool plane = i % 2 == 1;
+      std::unique_ptr<ceres::CostFunction> single;
+      if (revolute) {
+        const RevolutePointCost point(T_world_joint, Eigen::Isometry3d::Identity(), axis, p, q, w);
+        single.reset(plane ? JointPointToPlaneCost<RevolutePointCost>::Create(point, n)
+                           : new ceres::AutoDiffCostFunction<RevolutePointCost, 3, 1>(
+                                 new RevolutePointCost(point)));
+      } else {
+        const PrismaticPointCost point(T_world_joint, Eigen::Isometry3d::Identity(), axis, p, q, w);
+        single.reset(plane ? JointPointToPlaneCost<PrismaticPointCost>::Create(point, n)
+                           : new ceres::AutoDiffCostFunction<PrismaticPointCost, 3, 1>(
+                                 new PrismaticPointCost(point)));
+      }
+      if (plane) {
+        batch.AddPlane(p, q, n, w);
+      } else {
+        batch.AddPoint(p, q, w);
+      }
+      singles.push_back(std::move(single));
+    }
+    ASSERT_EQ(batch.num_residuals(), 3 * 3 + 3 * 1);
+    std::vector<std::vector<double>> params = {{revolute ? 0.7 : 0.13}};
+    const Evaluation all = Evaluate(batch, params);
+    size_t row = 0;
+    for (const auto& single : singles) {
+      const Evaluation one = Evaluate(*single, params);
+      for (size_t k = 0; k < one.residuals.size(); ++k, ++row) {
+        EXPECT_NEAR(all.residuals[row], one.residuals[k], 1e-12) << "row " << row;
+        EXPECT_NEAR(all.jacobians[0][row], one.jacobians[0][k], 1e-12) << "row " << row;
+      }
+    }
+  }
 }
 
 // ---- End-to-end solves ------------------------------------------------------
