@@ -30,37 +30,32 @@ DEFINE_string(weighting, "edge", "edge: Eq. (6) weights in every stage; uniform:
 DEFINE_string(loss, "trivial",
               "Loss of the precise ICP residuals: trivial, huber, cauchy, soft_l1, arctan, tukey.");
 DEFINE_double(loss_scale_mm, 5.0, "Scale of --loss [mm].");
-DEFINE_double(lambda, 1.0, "Eq. (10)/(14) penalty weight relative to the data (pose_penalty only).");
+DEFINE_double(lambda, 1.0,
+              "Eq. (10)/(14) penalty weight relative to the data (pose_penalty only).");
 DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICP: joint_space (1 parameter) or pose_penalty "
               "(the paper's 6-DoF pose + Eq. (10) penalties, then projection).");
-DEFINE_string(init, "", "Optional base hint x,y,yaw_deg (metres, degrees): skips the rough base "
-                        "stage. Never required.");
-DEFINE_string(out_joint_states, "", "Optional output: joint values as YAML, ROS joint_states "
-                                    "layout (name, position).");
-DEFINE_string(out_urdf, "", "Optional output: the model with a world link and a fixed joint at "
-                            "the fitted base pose (joint values in a comment).");
+DEFINE_string(init, "",
+              "Optional base hint x,y,yaw_deg (metres, degrees): skips the rough base "
+              "stage. Never required.");
+DEFINE_string(out_joint_states, "",
+              "Optional output: joint values as YAML, ROS joint_states "
+              "layout (name, position).");
+DEFINE_string(out_urdf, "",
+              "Optional output: the model with a world link and a fixed joint at "
+              "the fitted base pose (joint values in a comment).");
 
 DEFINE_string(out_background, "",
               "Optional output: the scan with the fitted model's points removed (.ptx, .pcd or "
               ".ply): the scanned equipment is replaced by its model.");
-DEFINE_double(background_distance_mm, 8.0,
-              "--out_background: points within this of the fitted model's surface are removed [mm].");
+DEFINE_double(
+    background_distance_mm, 8.0,
+    "--out_background: points within this of the fitted model's surface are removed [mm].");
 
 namespace edgefit::tools {
 namespace {
 
 using nlohmann::json;
-
-json MatrixJson(const Pose& T) {
-  json rows = json::array();
-  for (int r = 0; r < 4; ++r) {
-    json row = json::array();
-    for (int c = 0; c < 4; ++c) row.push_back(T.matrix()(r, c));
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 Status OptionsFromFlags(RobotFitOptions* options) {
   options->edges.w_high = FLAGS_w_high;
@@ -77,7 +72,8 @@ Status OptionsFromFlags(RobotFitOptions* options) {
   EDGEFIT_RETURN_IF_ERROR(
       ParseJointParameterization(FLAGS_parameterization, &options->joint_icp.parameterization));
   options->subtree_icp.parameterization = options->joint_icp.parameterization;
-  if (!(FLAGS_background_distance_mm > 0.0)) return Status::Error("--background_distance_mm must be > 0");
+  if (!(FLAGS_background_distance_mm > 0.0))
+    return Status::Error("--background_distance_mm must be > 0");
   if (!FLAGS_init.empty()) {
     options->has_initial_base = true;
     double x = 0.0, y = 0.0, yaw = 0.0;
@@ -154,22 +150,24 @@ int RunFit(const Command& command) {
   std::vector<AttachSpec> specs;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseAttachSpecList(FLAGS_attach, &specs));
   KinematicModel model;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                               LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
   bool prismatic_only = true;
   for (const Joint& j : model.joints()) {
     if (j.IsIndependent() && j.type != JointType::kPrismatic) prismatic_only = false;
   }
   if (FLAGS_kind == "auto" && prismatic_only) {
-    return BadInput(command, FLAGS_urdf + ": a conveyance system (prismatic joints only); "
-                             "its pipeline is not implemented yet (issue 7)");
+    return BadInput(command, FLAGS_urdf +
+                                 ": a conveyance system (prismatic joints only); "
+                                 "its pipeline is not implemented yet (issue 7)");
   }
   ScanSet scans;
   for (const std::string& path : SplitList(FLAGS_scan)) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
   }
   Truth truth;
-  if (!FLAGS_truth.empty()) EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadTruthJson(FLAGS_truth, &truth));
+  if (!FLAGS_truth.empty())
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadTruthJson(FLAGS_truth, &truth));
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -177,8 +175,8 @@ int RunFit(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitRobot(model, scans, options, &Progress, &fit));
   FitErrors errors;
   if (!FLAGS_truth.empty()) {
-    const Status status = CompareWithTruth(model, fit.q, fit.T_world_base, truth.joints,
-                                           truth.T_world_base, &errors);
+    const Status status =
+        CompareWithTruth(model, fit.q, fit.T_world_base, truth.joints, truth.T_world_base, &errors);
     if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
   }
 
@@ -191,10 +189,14 @@ int RunFit(const Command& command) {
   }
   json per_link = json::object();
   for (const BodyQuality& b : fit.bodies) {
-    per_link[b.link] = {{"joint", b.joint},          {"samples", b.samples},
-                        {"visible", b.visible},      {"inlier_share", b.inlier_share},
-                        {"rms_m", b.rms},            {"symmetric", b.symmetric},
-                        {"icp_iterations", b.icp_iterations}, {"ok", b.ok}};
+    per_link[b.link] = {{"joint", b.joint},
+                        {"samples", b.samples},
+                        {"visible", b.visible},
+                        {"inlier_share", b.inlier_share},
+                        {"rms_m", b.rms},
+                        {"symmetric", b.symmetric},
+                        {"icp_iterations", b.icp_iterations},
+                        {"ok", b.ok}};
     if (!b.joint.empty()) per_link[b.link]["sweep_value"] = b.sweep_value;
     per_link[b.link]["ambiguous"] = b.ambiguous;
     if (std::isfinite(b.ambiguity_margin)) {  // an alternative value was fitted and compared
@@ -202,24 +204,37 @@ int RunFit(const Command& command) {
       per_link[b.link]["alternative_margin_m"] = b.ambiguity_margin;
     }
   }
-  json result = {
-      {"kind", "articulated"},
-      {"base", {{"xyz", {xyz.x(), xyz.y(), xyz.z()}}, {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
-                {"T_world_base", MatrixJson(fit.T_world_base)}}},
-      {"joints", joints},
-      {"timing_s", {{"load", load_seconds}, {"edges", fit.timings.edges},
-                    {"base_rough", fit.timings.base_rough}, {"base_precise", fit.timings.base_precise},
-                    {"chain", fit.timings.chain}, {"total", 0.0}}},
-      {"quality", {{"per_link", per_link}, {"ok", fit.ok}, {"message", fit.message},
-                   {"base_rough", {{"floor_z", fit.base_rough.floor_z},
-                                   {"scan_corners", fit.base_rough.scan_corners},
-                                   {"model_corners", fit.base_rough.model_corners},
-                                   {"hypotheses", fit.base_rough.hypotheses},
-                                   {"inlier_share", fit.base_rough.inlier_share}}}}},
-      {"options", {{"weighting", FLAGS_weighting}, {"w_high", FLAGS_w_high}, {"loss", FLAGS_loss},
-                   {"lambda", FLAGS_lambda}, {"parameterization", FLAGS_parameterization},
+  json result = {{"kind", "articulated"},
+                 {"base",
+                  {{"xyz", {xyz.x(), xyz.y(), xyz.z()}},
+                   {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
+                   {"T_world_base", PoseRows(fit.T_world_base)}}},
+                 {"joints", joints},
+                 {"timing_s",
+                  {{"load", load_seconds},
+                   {"edges", fit.timings.edges},
+                   {"base_rough", fit.timings.base_rough},
+                   {"base_precise", fit.timings.base_precise},
+                   {"chain", fit.timings.chain},
+                   {"total", 0.0}}},
+                 {"quality",
+                  {{"per_link", per_link},
+                   {"ok", fit.ok},
+                   {"message", fit.message},
+                   {"base_rough",
+                    {{"floor_z", fit.base_rough.floor_z},
+                     {"scan_corners", fit.base_rough.scan_corners},
+                     {"model_corners", fit.base_rough.model_corners},
+                     {"hypotheses", fit.base_rough.hypotheses},
+                     {"inlier_share", fit.base_rough.inlier_share}}}}},
+                 {"options",
+                  {{"weighting", FLAGS_weighting},
+                   {"w_high", FLAGS_w_high},
+                   {"loss", FLAGS_loss},
+                   {"lambda", FLAGS_lambda},
+                   {"parameterization", FLAGS_parameterization},
                    {"seed", FLAGS_seed}}},
-      {"threads", omp_get_max_threads()}};
+                 {"threads", omp_get_max_threads()}};
   if (!FLAGS_truth.empty()) {
     json e = json::object();
     for (const JointError& j : errors.joints) e[j.name] = j.error;
@@ -235,7 +250,8 @@ int RunFit(const Command& command) {
     return BadInput(command, status);
   };
   if (!FLAGS_out_joint_states.empty()) {
-    const Status status = WriteStringAtomically(FLAGS_out_joint_states, JointStatesYaml(model, fit.q));
+    const Status status =
+        WriteStringAtomically(FLAGS_out_joint_states, JointStatesYaml(model, fit.q));
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_joint_states);
   }
@@ -275,7 +291,8 @@ int RunFit(const Command& command) {
     std::printf("background: removed %zu of %zu points within %.1f mm of the fitted model\n",
                 removed, before, FLAGS_background_distance_mm);
   }
-  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result["timing_s"]["total"] = total;
   const Status status = WriteStringAtomically(FLAGS_out, result.dump(2) + "\n");
   if (!status.ok()) return fail(status);
@@ -304,33 +321,53 @@ int RunFit(const Command& command) {
                   j.independent ? "" : " (dependent)");
     }
   }
-  std::printf("quality: %s%s%s\n", fit.ok ? "ok" : "NOT OK", fit.ok ? "" : ": ", fit.message.c_str());
-  std::printf("time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
-              "total %.2f s (load %.2f s)\n",
-              fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise,
-              fit.timings.chain, total, load_seconds);
+  std::printf("quality: %s%s%s\n", fit.ok ? "ok" : "NOT OK", fit.ok ? "" : ": ",
+              fit.message.c_str());
+  std::printf(
+      "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
+      "total %.2f s (load %.2f s)\n",
+      fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain, total,
+      load_seconds);
   return kExitOk;
 }
 
 }  // namespace
 
 Command FitCommand() {
-  return {"fit",
-          "fit the kinematic model to the scan: base pose and every joint (paper Sec. 5)",
-          "Usage:\n"
-          "  edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json\n"
-          "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
-          "              [--parameterization=joint_space|pose_penalty] [--init=x,y,yaw_deg]\n"
-          "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
-          "              [--out_ply=M.ply] [--out_background=B.ptx] [--background_distance_mm=8]\n"
-          "              [--threads=N] [--seed=N]\n"
-          "Example:\n"
-          "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
-          "    --scan=robot.ptx --truth=robot_truth.json --out=result.json",
-          {"urdf", "attach", "scan", "out", "kind", "weighting", "w_high", "loss", "loss_scale_mm",
-           "lambda", "parameterization", "init", "truth", "out_joint_states", "out_urdf", "out_ply",
-           "out_background", "background_distance_mm", "threads", "seed"},
-          &RunFit};
+  return {
+      "fit",
+      "fit the kinematic model to the scan: base pose and every joint (paper Sec. 5)",
+      "Usage:\n"
+      "  edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json\n"
+      "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
+      "              [--parameterization=joint_space|pose_penalty] [--init=x,y,yaw_deg]\n"
+      "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
+      "              [--out_ply=M.ply] [--out_background=B.ptx] [--background_distance_mm=8]\n"
+      "              [--threads=N] [--seed=N]\n"
+      "Example:\n"
+      "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
+      "    --scan=robot.ptx --truth=robot_truth.json --out=result.json",
+      {"urdf",
+       "attach",
+       "scan",
+       "out",
+       "kind",
+       "weighting",
+       "w_high",
+       "loss",
+       "loss_scale_mm",
+       "lambda",
+       "parameterization",
+       "init",
+       "truth",
+       "out_joint_states",
+       "out_urdf",
+       "out_ply",
+       "out_background",
+       "background_distance_mm",
+       "threads",
+       "seed"},
+      &RunFit};
 }
 
 }  // namespace edgefit::tools

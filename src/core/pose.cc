@@ -37,4 +37,13 @@ Pose PoseFromXyYaw(double x, double y, double yaw) {
   return PoseFromXyzRpy(Eigen::Vector3d(x, y, 0.0), Eigen::Vector3d(0.0, 0.0, yaw));
 }
 
+std::array<std::array<double, 4>, 4> PoseRows(const Pose& T) {
+  std::array<std::array<double, 4>, 4> rows;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c)
+      rows[static_cast<size_t>(r)][static_cast<size_t>(c)] = T.matrix()(r, c);
+  }
+  return rows;
+}
+
 }  // namespace edgefit

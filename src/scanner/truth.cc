@@ -1,8 +1,7 @@
 #include "edgefit/scanner/truth.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/scanner/label_file.h"
@@ -11,16 +10,6 @@ namespace edgefit {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-Json MatrixJson(const Pose& T) {
-  Json rows = Json::array();
-  for (int r = 0; r < 4; ++r) {
-    Json row = Json::array();
-    for (int c = 0; c < 4; ++c) row.push_back(T.matrix()(r, c));
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 // A 4x4 rigid transform from nested arrays; false on a wrong shape.
 bool PoseFromJson(const Json& j, Pose* T) {
@@ -40,7 +29,7 @@ bool PoseFromJson(const Json& j, Pose* T) {
 }  // namespace
 
 std::vector<std::pair<std::string, double>> NamedJointValues(const KinematicModel& model,
-                                                            const std::vector<double>& q) {
+                                                             const std::vector<double>& q) {
   std::vector<std::pair<std::string, double>> named;
   for (size_t j = 0; j < model.joints().size() && j < q.size(); ++j) {
     if (model.joints()[j].IsMoving()) named.emplace_back(model.joints()[j].name, q[j]);
@@ -48,8 +37,8 @@ std::vector<std::pair<std::string, double>> NamedJointValues(const KinematicMode
   return named;
 }
 
-TruthSettings MakeTruthSettings(const VirtualScanOptions& options, int scanners,
-                                bool accessories, bool random_pose) {
+TruthSettings MakeTruthSettings(const VirtualScanOptions& options, int scanners, bool accessories,
+                                bool random_pose) {
   TruthSettings s;
   s.spacing = options.spacing;
   s.noise_sigma = options.noise_sigma;
@@ -105,24 +94,23 @@ Status WriteTruthJson(const std::string& path, const Truth& truth) {
   Json joints = Json::object();
   for (const auto& [name, value] : truth.joints) joints[name] = value;
   j["joints"] = joints;
-  j["T_world_base"] = MatrixJson(truth.T_world_base);
+  j["T_world_base"] = PoseRows(truth.T_world_base);
   j["base"] = {{"x", truth.base_x}, {"y", truth.base_y}, {"yaw", truth.base_yaw}};
   Json scanners = Json::array();
-  for (const Pose& T : truth.T_world_scanners) scanners.push_back(MatrixJson(T));
+  for (const Pose& T : truth.T_world_scanners) scanners.push_back(PoseRows(T));
   j["scanners"] = scanners;
   j["seed"] = truth.seed;
   const TruthSettings& s = truth.settings;
-  j["settings"] = {{"spacing", s.spacing},           {"noise_sigma", s.noise_sigma},
-                   {"scanners", s.scanners},         {"accessories", s.accessories},
-                   {"random_pose", s.random_pose},   {"full_dome", s.full_dome},
-                   {"max_range", s.max_range},       {"true_edge_distance", s.true_edge_distance}};
+  j["settings"] = {{"spacing", s.spacing},         {"noise_sigma", s.noise_sigma},
+                   {"scanners", s.scanners},       {"accessories", s.accessories},
+                   {"random_pose", s.random_pose}, {"full_dome", s.full_dome},
+                   {"max_range", s.max_range},     {"true_edge_distance", s.true_edge_distance}};
   const LabelCounts& c = truth.counts;
   Json per_link = Json::object();
   for (const auto& [name, n] : c.per_link) per_link[name] = n;
-  j["counts"] = {{"cells", c.cells},         {"valid", c.valid},
-                 {"missing", c.missing},     {"background", c.background},
-                 {"accessory", c.accessory}, {"link", c.link},
-                 {"true_edge", c.true_edge}, {"per_link", per_link}};
+  j["counts"] = {{"cells", c.cells},           {"valid", c.valid},         {"missing", c.missing},
+                 {"background", c.background}, {"accessory", c.accessory}, {"link", c.link},
+                 {"true_edge", c.true_edge},   {"per_link", per_link}};
   j["labels_format"] = LabelsFormatDescription();
   return WriteStringAtomically(path, j.dump(2) + "\n");
 }

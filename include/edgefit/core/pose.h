@@ -4,6 +4,7 @@
 #define EDGEFIT_CORE_POSE_H_
 
 #include <Eigen/Geometry>
+#include <array>
 
 namespace edgefit {
 
@@ -17,6 +18,9 @@ Eigen::Vector3d RpyFromRotation(const Eigen::Matrix3d& R);
 Pose PoseFromXyzRpy(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy);
 // A pose on the floor plane: translation (x, y, 0), rotation about +Z by yaw.
 Pose PoseFromXyYaw(double x, double y, double yaw);
+// The 4x4 matrix of T, row by row (the JSON layout of result.json and the
+// truth file: nlohmann::json takes it as nested arrays).
+std::array<std::array<double, 4>, 4> PoseRows(const Pose& T);
 
 }  // namespace edgefit
 
