@@ -1,7 +1,6 @@
 // Joint-space point-to-plane residual: the planar variant of the joint-space
-// data term (revolute_point_cost.h, prismatic_point_cost.h), using the
-// target normal from the edge stage (Sec. 4), as point_to_plane_cost.h is
-// for the 6-DoF pose:
+// data term (revolute_point_cost.h, prismatic_point_cost.h), as
+// point_to_plane_cost.h is for the 6-DoF pose:
 //
 //   r = n_world^T r_point(q)                                 1 residual [m]
 //   r_point(q) = sqrt(w_edge) (T_world_joint * Motion(axis, q) * p_child
@@ -9,8 +8,8 @@
 //
 // r_point is the 3-vector of PointCost (RevolutePointCost: q = theta [rad],
 // Motion a rotation about axis; PrismaticPointCost: q = d [m], a shift along
-// it); n_world: unit surface normal at q_world (world frame, normalised
-// here). Sliding along the scanned surface costs nothing, so the ICP
+// it); n_world: unit normal of the plane, fixed for the solve (world frame,
+// normalised here; see point_to_plane_cost.h). Sliding along the scanned surface costs nothing, so the ICP
 // converges in a few iterations where point-to-point crawls.
 //
 // Parameter block: q[1].

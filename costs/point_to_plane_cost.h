@@ -1,10 +1,12 @@
 // Edge-weighted point-to-plane residual, the planar variant of the Eq. (8)
-// data term (Sec. 5.1.2) using the target normal from the edge stage (Sec. 4):
+// data term (Sec. 5.1.2):
 //
 //   r = sqrt(w_edge) * n_world^T (R p_link + t - q_world)     1 residual [m]
 //
 // p_link: CAD point in the link frame; q_world: its scan correspondence;
-// n_world: unit surface normal at q_world (world frame, normalised here);
+// n_world: unit normal of the plane, fixed for the solve (world frame,
+// normalised here): the CAD sample's, posed at the current estimate, or the
+// target's from the edge stage (WeightedIcpOptions::plane_normals);
 // w_edge >= 0: edge weight of Eq. (6).
 //
 // Pose parameterisation as in point_to_point_cost.h: rotation_world_link[3]
