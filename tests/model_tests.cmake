@@ -7,6 +7,7 @@ edgefit_add_test(model_test
     model/mesh_loader_test.cc
     model/urdf_loader_test.cc
     model/composition_test.cc
+    model/calibrated_urdf_test.cc
     model/surface_sampler_test.cc
     model/sharp_edges_test.cc
     model/joint_values_test.cc

@@ -18,6 +18,7 @@
 #include "common_flags.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
+#include "edgefit/model/calibrated_urdf.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/mesh_ply.h"
 #include "edgefit/pipeline/fit_errors.h"
@@ -98,38 +99,6 @@ std::string JointStatesYaml(const KinematicModel& model, const std::vector<doubl
   }
   return "# edgefit fit: sensor_msgs/JointState (radians, metres)\nname: [" + names.str() +
          "]\nposition: [" + positions.str() + "]\nvelocity: []\neffort: []\n";
-}
-
-// The model's URDF text with a world link and a fixed joint at the base pose.
-Status CalibratedUrdf(const std::string& urdf_path, const KinematicModel& model,
-                      const RobotFitResult& fit, std::string* out) {
-  std::string text;
-  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(urdf_path, &text));
-  const size_t robot = text.find("<robot");
-  const size_t open_end = robot == std::string::npos ? robot : text.find('>', robot);
-  if (open_end == std::string::npos) return Status::Error(urdf_path + ": no <robot> element");
-  const Eigen::Vector3d t = fit.T_world_base.translation();
-  const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
-  char joint[512];
-  std::snprintf(joint, sizeof(joint),
-                "\n  <!-- edgefit fit: base pose in the scan's world frame -->\n"
-                "  <link name=\"world\"/>\n"
-                "  <joint name=\"world_to_%s\" type=\"fixed\">\n"
-                "    <parent link=\"world\"/>\n    <child link=\"%s\"/>\n"
-                "    <origin xyz=\"%.9g %.9g %.9g\" rpy=\"%.9g %.9g %.9g\"/>\n  </joint>",
-                model.links()[static_cast<size_t>(model.root_link())].name.c_str(),
-                model.links()[static_cast<size_t>(model.root_link())].name.c_str(), t.x(), t.y(),
-                t.z(), rpy.x(), rpy.y(), rpy.z());
-  std::string values = "\n  <!-- fitted joint values:";
-  for (size_t j = 0; j < model.joints().size(); ++j) {
-    if (!model.joints()[j].IsMoving()) continue;
-    char v[128];
-    std::snprintf(v, sizeof(v), " %s=%.9g", model.joints()[j].name.c_str(), fit.q[j]);
-    values += v;
-  }
-  values += " -->";
-  *out = text.substr(0, open_end + 1) + values + joint + text.substr(open_end + 1);
-  return Status::Ok();
 }
 
 int RunFit(const Command& command) {
@@ -257,7 +226,8 @@ int RunFit(const Command& command) {
   }
   if (!FLAGS_out_urdf.empty()) {
     std::string urdf;
-    Status status = CalibratedUrdf(FLAGS_urdf, model, fit, &urdf);
+    Status status = CalibratedUrdf(FLAGS_urdf, specs, model, fit.T_world_base, fit.q,
+                                   ModelLoadOptions(), &urdf);
     if (status.ok()) status = WriteStringAtomically(FLAGS_out_urdf, urdf);
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_urdf);

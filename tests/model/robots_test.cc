@@ -11,6 +11,7 @@
 #include "edgefit/model/sharp_edges.h"
 #include "edgefit/model/surface_sampler.h"
 #include "edgefit/model/urdf_loader.h"
+#include "model/calibrated_urdf_check.h"
 
 namespace edgefit {
 namespace {
@@ -18,14 +19,16 @@ namespace {
 const std::string kRobots = EDGEFIT_SHARED_DIR "/robots";
 
 struct RobotCase {
-  std::string name;          // Folder and URDF basename.
-  bool floor_standing;       // Zero-pose z-min at the floor (z = 0).
-  int total_triangles;       // Measured, all links.
-  Eigen::Vector3d bb_min;    // Measured zero-pose bounding box [m], checked by eye.
+  std::string name;        // Folder and URDF basename.
+  bool floor_standing;     // Zero-pose z-min at the floor (z = 0).
+  int total_triangles;     // Measured, all links.
+  Eigen::Vector3d bb_min;  // Measured zero-pose bounding box [m], checked by eye.
   Eigen::Vector3d bb_max;
 };
 
-std::string UrdfPath(const std::string& name) { return kRobots + "/" + name + "/" + name + ".urdf"; }
+std::string UrdfPath(const std::string& name) {
+  return kRobots + "/" + name + "/" + name + ".urdf";
+}
 
 class RobotModelTest : public ::testing::TestWithParam<RobotCase> {
  protected:
@@ -59,7 +62,9 @@ TEST_P(RobotModelTest, MeshesLoadAndEveryVisualLinkHasTriangles) {
     const Eigen::AlignedBox3d bb = link.mesh.BoundingBox();
     std::cout << "  " << GetParam().name << " link " << link.name << ": " << link_triangles
               << " triangles";
-    if (!bb.isEmpty()) std::cout << ", area " << link.mesh.SurfaceArea() << " m2, bbox [" << bb.min().transpose() << "] [" << bb.max().transpose() << "]";
+    if (!bb.isEmpty())
+      std::cout << ", area " << link.mesh.SurfaceArea() << " m2, bbox [" << bb.min().transpose()
+                << "] [" << bb.max().transpose() << "]";
     std::cout << "\n";
     total += link_triangles;
   }
@@ -85,7 +90,8 @@ TEST_P(RobotModelTest, JointOriginsLieNearTheirLinkMeshes) {
       box->max().array() += 0.15;
     }
     const Eigen::Vector3d origin = joint.T_parent_joint.translation();
-    EXPECT_TRUE((!parent_box.isEmpty() && parent_box.contains(origin)) || child_box.contains(origin))
+    EXPECT_TRUE((!parent_box.isEmpty() && parent_box.contains(origin)) ||
+                child_box.contains(origin))
         << GetParam().name << ": joint " << joint.name << " origin " << origin.transpose()
         << " far from the meshes of " << parent.name << " and " << child.name;
   }
@@ -99,7 +105,8 @@ TEST_P(RobotModelTest, SurfaceSamplesAndSharpEdges) {
     const TriangleMesh& mesh = model_.links()[l].mesh;
     if (mesh.empty()) continue;
     total += samples[l].size();
-    expected += static_cast<size_t>(std::llround(mesh.SurfaceArea() / (options.spacing * options.spacing)));
+    expected +=
+        static_cast<size_t>(std::llround(mesh.SurfaceArea() / (options.spacing * options.spacing)));
     const MeshEdges edges = ExtractSharpEdges(mesh);
     sharp += edges.sharp.size();
     boundary += edges.boundary.size();
@@ -107,7 +114,8 @@ TEST_P(RobotModelTest, SurfaceSamplesAndSharpEdges) {
   }
   std::cout << "  " << GetParam().name << ": " << total << " samples at 2 mm, " << sharp
             << " sharp edges, " << boundary << " open boundary edges\n";
-  EXPECT_NEAR(static_cast<double>(total), static_cast<double>(expected), 1.0 * model_.links().size());
+  EXPECT_NEAR(static_cast<double>(total), static_cast<double>(expected),
+              1.0 * model_.links().size());
 }
 
 TEST_P(RobotModelTest, ZeroPoseBoundingBox) {
@@ -135,13 +143,19 @@ const RobotCase kRobotCases[] = {
     {"kuka_kr150r3100_2", true, 59721, {-0.7540, -0.4309, 0.0000}, {3.2997, 0.4309, 1.1060}},
     {"abb_irb6700_200_260", true, 66530, {-0.7600, -0.4560, 0.0000}, {1.6625, 0.3600, 2.2762}},
     {"fanuc_m900ib700", true, 4384, {-0.8120, -0.7258, 0.0000}, {1.9950, 0.7258, 2.5600}},
-    {"kuka_kr150_2_on_linear_axis", true, 52934, {-0.8790, -4.0829, 0.0000}, {3.1420, 4.0829, 1.9350}},
+    {"kuka_kr150_2_on_linear_axis",
+     true,
+     52934,
+     {-0.8790, -4.0829, 0.0000},
+     {3.1420, 4.0829, 1.9350}},
     {"motoman_motopos_d500", true, 17117, {-0.2500, -0.5568, -0.0002}, {0.2500, 0.3782, 0.5452}},
     {"weld_gun_x16005_botrail", false, 6176, {-0.2580, -0.1530, 0.0000}, {0.5655, 0.1530, 0.4997}},
 };
 
 INSTANTIATE_TEST_SUITE_P(Robots, RobotModelTest, ::testing::ValuesIn(kRobotCases),
-                         [](const ::testing::TestParamInfo<RobotCase>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<RobotCase>& info) {
+                           return info.param.name;
+                         });
 
 // Loads one model by folder name; false (and a skip) when the data is absent.
 bool LoadRobot(const std::string& name, KinematicModel* model) {
@@ -156,7 +170,8 @@ TEST(RobotDetailTest, ColladaMeshesAreZUpAndMillimetreStlIsScaled) {
   if (!LoadRobot("kuka_kr150_2_on_linear_axis", &model)) GTEST_SKIP() << "robots absent";
   // KR 150-2 base (DAE, Z_UP, metres): a 0.33 m high plinth standing on z = 0,
   // symmetric in y. Read as Y-up it would span z = +-0.5.
-  const Eigen::AlignedBox3d base = model.links()[model.LinkIndex("robot_base_link")].mesh.BoundingBox();
+  const Eigen::AlignedBox3d base =
+      model.links()[model.LinkIndex("robot_base_link")].mesh.BoundingBox();
   EXPECT_NEAR(base.min().z(), 0.0, 1e-3);
   EXPECT_NEAR(base.max().z(), 0.331, 1e-3);
   EXPECT_NEAR(base.min().y(), -base.max().y(), 1e-3);
@@ -223,6 +238,29 @@ TEST(RobotDetailTest, WeldGunAttachedAtKukaTool0MovesWithJointA6) {
   EXPECT_GT((T1[tcp].translation() - T0[tcp].translation()).norm(), 0.1);  // TCP off the a6 axis.
   // The gun extends the zero-pose box beyond the bare robot's 3.30 m.
   EXPECT_GT(model.BoundingBox(model.ZeroJoints()).max().x(), 3.3);
+}
+
+// `edgefit fit --out_urdf` for each arm carrying the shared gun: the file
+// loads back from another directory (mesh paths made absolute, mimic joints
+// kept) with every link, the gun's included, at the fitted pose.
+TEST(RobotDetailTest, CalibratedUrdfWithTheGunLoadsBack) {
+  for (const char* name : {"kuka_kr150r3100_2", "abb_irb6700_200_260", "fanuc_m900ib700"}) {
+    KinematicModel model;
+    if (!LoadRobot(name, &model)) GTEST_SKIP() << "robots absent";
+    std::vector<AttachSpec> specs(1);
+    ASSERT_TRUE(ParseAttachSpec(UrdfPath("weld_gun_x16005_botrail") + "@tool0", &specs[0]).ok());
+    ASSERT_TRUE(AttachModel(specs[0], {}, &model).ok());
+    std::vector<double> q = model.ZeroJoints();
+    for (const int j : model.IndependentJoints()) {
+      const Joint& joint = model.joints()[static_cast<size_t>(j)];
+      q[static_cast<size_t>(j)] = joint.has_limits ? 0.3 * joint.lower + 0.7 * joint.upper : 0.5;
+    }
+    ASSERT_TRUE(model.ResolveDependentJoints(&q).ok()) << name;
+    SCOPED_TRACE(name);
+    testing_util::ExpectCalibratedUrdfLoadsBack(UrdfPath(name), specs, model, q,
+                                                PoseFromXyzRpy({-0.7, 2.1, 0.0}, {0, 0, -1.2}),
+                                                std::string("calibrated_") + name);
+  }
 }
 
 }  // namespace
