@@ -37,8 +37,8 @@ DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICP: joint_space (1 parameter) or pose_penalty "
               "(the paper's 6-DoF pose + Eq. (10) penalties, then projection).");
 DEFINE_string(init, "",
-              "Optional base hint x,y,yaw_deg (metres, degrees): skips the rough base "
-              "stage. Never required.");
+              "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
+              "scan's floor): skips the rough base stage. Never required.");
 DEFINE_string(out_joint_states, "",
               "Optional output: joint values as YAML, ROS joint_states "
               "layout (name, position).");

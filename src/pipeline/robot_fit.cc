@@ -538,7 +538,19 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
   }
   stage = std::chrono::steady_clock::now();
   Pose T_world_base = options.T_world_base_initial;
-  if (!options.has_initial_base) {
+  if (options.has_initial_base) {
+    double floor_z = 0.0;
+    const Status status = EstimateFloorHeight(scans, edges.normals, Eigen::AlignedBox3d(),
+                                              options.base_rough.floor_normal_cos, &floor_z);
+    if (!status.ok()) {
+      result->ok = false;
+      result->message = "base hint: " + status.message();
+      result->q = model.ZeroJoints();
+      result->timings.total = Since(start);
+      return Status::Ok();
+    }
+    T_world_base.translation().z() += floor_z;
+  } else {
     TriangleMesh base_mesh;
     for (size_t k = 0; k < base.links.size(); ++k) {
       base_mesh.Append(model.links()[static_cast<size_t>(base.links[k])].mesh, base.T_body_link[k]);

@@ -180,6 +180,32 @@ TEST(RobotFitTest, ModelPointsAreTheRobotsPoints) {
 
 // The wrong input: a scan of the place without the robot must not
 // give a confident answer.
+// --init: the hint gives x, y and yaw only; the base height comes from the
+// scan's floor, wherever the scan's origin is (here 1.3 m above the floor,
+// as in a scanner-centred frame). The hint is 3 cm and 3 degrees off.
+TEST(RobotFitTest, BaseHintTakesTheHeightFromTheFloor) {
+  const RobotScene& s = GetScene();
+  ScanSet lowered = s.scans;
+  const Pose T_shift = PoseFromXyzRpy({0.0, 0.0, -1.3}, {0.0, 0.0, 0.0});
+  for (OrganizedScan& scan : lowered.scans)
+    scan.set_T_world_scanner(T_shift * scan.T_world_scanner());
+  RobotFitOptions options;
+  options.has_initial_base = true;
+  options.T_world_base_initial = PoseFromXyYaw(0.53, -0.17, 18.0 * kDeg);
+  RobotFitResult fit;
+  ASSERT_TRUE(FitRobot(s.model, lowered, options, nullptr, &fit).ok());
+  FitErrors errors;
+  ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, s.q),
+                               T_shift * s.T_world_base, &errors)
+                  .ok());
+  EXPECT_TRUE(fit.ok) << fit.message;
+  EXPECT_LT(errors.base_translation, 0.0001);
+  EXPECT_LT(errors.base_rotation, 0.03 * kDeg);
+  for (const JointError& e : errors.joints) {
+    EXPECT_LT(e.error, e.prismatic ? 0.002 : 0.05 * kDeg) << e.name;
+  }
+}
+
 TEST(RobotFitTest, ScanWithoutTheRobotIsNotOk) {
   const RobotScene& s = GetScene();
   RobotFitResult fit;

@@ -76,7 +76,10 @@ struct RobotFitOptions {
   // A revolute joint's resweeps cover this much either side of its value
   // [rad] (its first sweep covers its range; prismatic joints always do).
   double resweep_window_rad = 20.0 * M_PI / 180.0;
-  // Optional base hint: skip the rough base stage and start from this pose.
+  // Optional base hint: skip the rough base stage and start from this pose,
+  // its z measured from the scan's floor (EstimateFloorHeight; 0 for
+  // equipment standing on it: the hint need not know where the scan's
+  // origin is).
   bool has_initial_base = false;
   Pose T_world_base_initial = Pose::Identity();
   // Quality: a body fits when at least this share of its visible samples
