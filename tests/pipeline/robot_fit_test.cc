@@ -17,8 +17,10 @@
 
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
+#include "edgefit/model/urdf_loader.h"
 #include "edgefit/pipeline/fit_errors.h"
 #include "edgefit/pipeline/model_points.h"
+#include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/truth.h"
 #include "edgefit/scanner/virtual_scanner.h"
@@ -211,6 +213,31 @@ TEST(RobotFitTest, ScanWithoutTheRobotIsNotOk) {
   RobotFitResult fit;
   RobotFitOptions options;
   const Status status = FitRobot(s.model, s.empty_scans, options, nullptr, &fit);
+  ASSERT_TRUE(status.ok()) << status.message();
+  std::printf("  message: %s\n", fit.message.c_str());
+  EXPECT_FALSE(fit.ok);
+  EXPECT_FALSE(fit.message.empty());
+}
+
+// A scan of another robot (the two-axis balancer arm of assets/models)
+// fitted with the bundled robot's model: not ok, with a message.
+TEST(RobotFitTest, ScanOfAnotherRobotIsNotOk) {
+  const RobotScene& s = GetScene();
+  KinematicModel other;
+  ASSERT_TRUE(
+      LoadKinematicModel(std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf",
+                         ModelLoadOptions(), &other)
+          .ok());
+  std::vector<double> q = other.ZeroJoints();
+  ASSERT_TRUE(other.ResolveDependentJoints(&q).ok());
+  AssetScanOptions options;
+  options.accessories = true;
+  options.scan.spacing = 0.004;
+  options.seed = 7;
+  VirtualScan scan;
+  ASSERT_TRUE(ScanAsset(other, q, s.T_world_base, options, &scan, nullptr).ok());
+  RobotFitResult fit;
+  const Status status = FitRobot(s.model, scan.scans, RobotFitOptions(), nullptr, &fit);
   ASSERT_TRUE(status.ok()) << status.message();
   std::printf("  message: %s\n", fit.message.c_str());
   EXPECT_FALSE(fit.ok);
