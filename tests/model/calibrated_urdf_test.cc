@@ -13,15 +13,19 @@ namespace {
 
 const std::string kRobot = EDGEFIT_SOURCE_DIR "/assets/robot/";
 
+// The bundled robot with its weld gun on tool0.
+bool LoadRobotWithGun(std::vector<AttachSpec>* specs, KinematicModel* model) {
+  return ParseAttachSpecList(kRobot + "weld_gun.urdf@tool0", specs).ok() &&
+         LoadModelWithAttachments(kRobot + "robot.urdf", *specs, ModelLoadOptions(), model).ok();
+}
+
 // The calibrated URDF of the bundled robot with its gun, written to another
 // directory and loaded back: every link of the fitted model (gun included)
 // with its mesh, and each one where the fit put it.
 TEST(CalibratedUrdfTest, LoadsBackWithTheEndEffectorAtTheFittedPose) {
   std::vector<AttachSpec> specs;
-  ASSERT_TRUE(ParseAttachSpecList(kRobot + "weld_gun.urdf@tool0", &specs).ok());
   KinematicModel model;
-  ASSERT_TRUE(
-      LoadModelWithAttachments(kRobot + "robot.urdf", specs, ModelLoadOptions(), &model).ok());
+  ASSERT_TRUE(LoadRobotWithGun(&specs, &model));
   std::vector<double> q = model.ZeroJoints();
   const char* names[] = {"joint_1", "joint_2", "joint_5", "gun_joint"};
   const double values[] = {0.4, -0.3, 1.1, 0.05};
@@ -36,10 +40,8 @@ TEST(CalibratedUrdfTest, LoadsBackWithTheEndEffectorAtTheFittedPose) {
 
 TEST(CalibratedUrdfTest, RefusesPrefixedAttachmentsAndWrongJointCounts) {
   std::vector<AttachSpec> specs;
-  ASSERT_TRUE(ParseAttachSpecList(kRobot + "weld_gun.urdf@tool0", &specs).ok());
   KinematicModel model;
-  ASSERT_TRUE(
-      LoadModelWithAttachments(kRobot + "robot.urdf", specs, ModelLoadOptions(), &model).ok());
+  ASSERT_TRUE(LoadRobotWithGun(&specs, &model));
   std::string text;
   Status status = CalibratedUrdf(kRobot + "robot.urdf", specs, model, Pose::Identity(), {0.0},
                                  ModelLoadOptions(), &text);
