@@ -7,7 +7,9 @@
 //      target cell's edge weight w_edge (correspondence_search.h);
 //   3. one Ceres problem: a data residual per correspondence, Eq. (8)
 //      sqrt(w_edge) (R p + t - q) or its point-to-plane variant, under the
-//      chosen loss, plus, for a link on a joint, the kinematic constraint;
+//      chosen loss (in joint space under the trivial loss all of them in
+//      one block, costs/joint_batch_cost.h), plus, for a link on a joint,
+//      the kinematic constraint;
 //   4. stop when no sample moved more than convergence_displacement.
 //
 // The constraint of a link on a joint (LinkMotion) has two parameterisations:
