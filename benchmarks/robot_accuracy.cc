@@ -125,8 +125,8 @@ AssetScanOptions CaseScanOptions(const Case& c, bool accessories) {
 // seen. Random postures are not checked for self-collision
 // (random_joints.h): a forearm folded into the upper arm buries the whole
 // wrist, and no scan shows those joints. (With the benchmark's 3 scanners
-// a flange between a wrist and a gun can go unseen, which the fit must
-// handle; from 8 it is seen.)
+// a link can also go unseen by occlusion alone; the fit must handle that,
+// so the test uses more scanners than the fit's scan.)
 std::string BuriedLink(const KinematicModel& model, const Case& c) {
   AssetScanOptions options;
   options.clutter = 0;
