@@ -41,6 +41,7 @@ Status RobotBody(const std::string& path, const ModelLoadOptions& options, std::
   *head = text.substr(0, open_end + 1);
   body->clear();
   const std::string key = "filename=\"";
+  const std::vector<std::string> package_dirs = PackageDirs(options);
   size_t at = open_end + 1;
   for (size_t found; (found = text.find(key, at)) < close;) {
     const size_t begin = found + key.size();
@@ -48,7 +49,7 @@ Status RobotBody(const std::string& path, const ModelLoadOptions& options, std::
     if (end == std::string::npos || end > close) break;
     std::string resolved;
     const std::string uri = text.substr(begin, end - begin);
-    if (!ResolveMeshPath(uri, path, options.package_dirs, &resolved).ok()) resolved = uri;
+    if (!ResolveMeshPath(uri, path, package_dirs, &resolved).ok()) resolved = uri;
     *body += text.substr(at, begin - at) + resolved;
     at = end;
   }

@@ -141,14 +141,7 @@ Status LoadModel(const std::string& urdf_path, const ModelLoadOptions& options,
   urdf::ModelInterfaceSharedPtr urdf_model;
   EDGEFIT_RETURN_IF_ERROR(ParseWithUrdfdom(xml, &urdf_model));
 
-  std::vector<std::string> package_dirs = options.package_dirs;
-  const char* ros_package_path = std::getenv("ROS_PACKAGE_PATH");
-  if (options.use_ros_package_path && ros_package_path != nullptr) {
-    std::istringstream in(ros_package_path);
-    for (std::string dir; std::getline(in, dir, ':');) {
-      if (!dir.empty()) package_dirs.push_back(dir);
-    }
-  }
+  const std::vector<std::string> package_dirs = PackageDirs(options);
 
   KinematicModel out;
   out.mutable_name() = urdf_model->getName();
@@ -229,6 +222,18 @@ Status LoadModel(const std::string& urdf_path, const ModelLoadOptions& options,
 }
 
 }  // namespace
+
+std::vector<std::string> PackageDirs(const ModelLoadOptions& options) {
+  std::vector<std::string> package_dirs = options.package_dirs;
+  const char* ros_package_path = std::getenv("ROS_PACKAGE_PATH");
+  if (options.use_ros_package_path && ros_package_path != nullptr) {
+    std::istringstream in(ros_package_path);
+    for (std::string dir; std::getline(in, dir, ':');) {
+      if (!dir.empty()) package_dirs.push_back(dir);
+    }
+  }
+  return package_dirs;
+}
 
 Status LoadKinematicModel(const std::string& urdf_path, const ModelLoadOptions& options,
                           KinematicModel* model) {

@@ -38,6 +38,10 @@ struct ModelLoadOptions {
   bool IsValid(std::string* error) const;
 };
 
+// The roots searched for "package://" mesh names: options.package_dirs,
+// then $ROS_PACKAGE_PATH when options.use_ros_package_path.
+std::vector<std::string> PackageDirs(const ModelLoadOptions& options);
+
 // Replaces *model with the URDF at `urdf_path` (Finalize()d; Link::source is
 // `urdf_path`). Each mesh file is read once per call, however many visuals
 // use it.
