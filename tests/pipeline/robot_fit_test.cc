@@ -129,10 +129,10 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
   }
   // Measured at 4 mm spacing: base 0.033 mm, 0.012 deg; revolute joints
   // mean 0.0085 deg (the balancer's included), max 0.014 deg (joint_4); gun
-  // 0.59 mm. (Before point-to-plane residuals took the CAD normals: base
-  // 0.040 mm, mean 0.050 deg, max 0.18 deg, gun 1.0 mm.) About three times
-  // that fails. The bar (0.05 / 0.15 deg) is for the 1.7 mm scans of
-  // BENCHMARK.md.
+  // 0.59 mm. About three times that fails. (At 9ea65f0, before
+  // point-to-plane residuals took the CAD normals: base 0.040 mm, 0.019 deg;
+  // mean 0.045 deg, max 0.18 deg; gun 0.99 mm.) The bar (0.05 /
+  // 0.15 deg) is for the 1.7 mm scans of BENCHMARK.md.
   EXPECT_LT(errors.base_translation, 0.0001);
   EXPECT_LT(errors.base_rotation, 0.03 * kDeg);
   EXPECT_LT(sum / revolute, 0.025 * kDeg);
