@@ -1,5 +1,5 @@
-// Robot fit accuracy against the virtual scanner's ground truth (issue 6,
-// paper Sec. 7.3): named postures and seeded random ones, each on a random
+// Fit accuracy against the virtual scanner's ground truth (issues 6 and 7,
+// paper Sec. 7.3), for robots and conveyance systems (--kind): named postures and seeded random ones, each on a random
 // base pose, scanned with and without accessories, fitted with edge and/or
 // uniform weights. Prints a row per fit, then per configuration the joint
 // errors (mean, 95th percentile, max), the base errors, failed fits (a
@@ -12,6 +12,8 @@
 //       [--accessories=without,with] [--weighting=edge,uniform]
 //       [--spacing_mm=1.7] [--noise_mm=1] [--scanners=3] [--seed=1]
 //       [--csv=F.csv]   (one line per fitted joint)
+//   robot_accuracy --urdf=assets/conveyor/conveyor.urdf
+//       --postures=assets/conveyor/postures.json --spacing_mm=3   (kind: auto)
 // A random posture that buries a link with a mesh inside others (a
 // self-collision: the generator does not check them) is redrawn.
 #include <gflags/gflags.h>
@@ -29,6 +31,7 @@
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/random_joints.h"
+#include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit_errors.h"
 #include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/asset_scan.h"
@@ -40,6 +43,9 @@ DEFINE_string(postures, "", "A postures file: every posture in it is fitted.");
 DEFINE_int32(random, 20, "Random postures (RandomJointValuesAboveFloor) after the named ones.");
 DEFINE_string(accessories, "without,with", "Scenes: without and/or with accessories.");
 DEFINE_string(weighting, "edge,uniform", "Fits: edge and/or uniform weights.");
+DEFINE_string(kind, "auto", "auto | articulated | conveyance (edgefit fit --kind).");
+DEFINE_string(parameterization, "joint_space",
+              "Joint constraint of the precise ICPs: joint_space or pose_penalty (Eq. 10 / 14).");
 DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (edge fits).");
 DEFINE_string(icp_visibility, "seen",
               "Which CAD samples the ICPs use (WeightedIcpOptions::visibility): seen (facing a "
@@ -208,14 +214,15 @@ void PrintSummary(const std::string& config, const std::vector<FitRecord>& recor
   }
   std::printf("\n### %s: %zu fits\n\n", config.c_str(), records.size());
   std::printf(
-      "| revolute mean | p95 | max | prismatic mean | max | base mean | base max | "
+      "| revolute mean | p95 | max | prismatic mean | p95 | max | base mean | base max | "
       "base rot mean | max | failed | not ok | failed yet ok | mean time |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::printf(
-      "| %.4f° | %.4f° | %.4f° | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.4f° | %.4f° | "
+      "| %.4f° | %.4f° | %.4f° | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.4f° | %.4f° | "
       "%d | %d | %d | %.1f s |\n",
       Mean(revolute), Percentile(revolute, 0.95),
       revolute.empty() ? 0.0 : *std::max_element(revolute.begin(), revolute.end()), Mean(prismatic),
+      Percentile(prismatic, 0.95),
       prismatic.empty() ? 0.0 : *std::max_element(prismatic.begin(), prismatic.end()), Mean(base_t),
       *std::max_element(base_t.begin(), base_t.end()), Mean(base_r),
       *std::max_element(base_r.begin(), base_r.end()), failed, not_ok, confident_wrong,
@@ -237,6 +244,10 @@ int Run() {
   KinematicModel model;
   status = LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model);
   CHECK(status.ok()) << status.message();
+  AssetKind kind = AssetKind::kArticulated;
+  status = ChooseAssetKind(FLAGS_kind, model, &kind);
+  CHECK(status.ok()) << status.message();
+  std::printf("kind: %s\n", AssetKindName(kind));
   const std::vector<Case> cases = MakeCases(model);
 
   std::ofstream csv;
@@ -262,9 +273,13 @@ int Run() {
       CHECK(status.ok()) << status.message();
       for (const std::string& weighting : Split(FLAGS_weighting)) {
         CHECK(weighting == "edge" || weighting == "uniform") << weighting;
-        RobotFitOptions options;
+        RobotFitOptions options = FitOptionsFor(kind);
         options.uniform_weights = weighting == "uniform";
         options.edges.w_high = FLAGS_w_high;
+        status = ParseJointParameterization(FLAGS_parameterization,
+                                            &options.joint_icp.parameterization);
+        CHECK(status.ok()) << status.message();
+        options.subtree_icp.parameterization = options.joint_icp.parameterization;
         options.base_icp.visibility = options.joint_icp.visibility =
             options.subtree_icp.visibility = IcpVisibility(FLAGS_icp_visibility);
         RobotFitResult fit;
@@ -282,15 +297,15 @@ int Run() {
         status = CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, c.q),
                                   c.T_world_base, &record.errors);
         CHECK(status.ok()) << status.message();
-        double worst = 0.0;
-        std::string worst_name;
+        double worst[2] = {0.0, 0.0};  // revolute [deg], prismatic [mm]
+        std::string worst_name[2];
         for (const JointError& e : record.errors.joints) {
           if (!e.independent) continue;
           record.failed |= e.error > (e.prismatic ? kFailPrismatic : kFailRevolute);
           const double deg_or_mm = e.prismatic ? 1e3 * e.error : e.error / kDeg;
-          if (!e.prismatic && deg_or_mm > worst) {
-            worst = deg_or_mm;
-            worst_name = e.name;
+          if (deg_or_mm > worst[e.prismatic]) {
+            worst[e.prismatic] = deg_or_mm;
+            worst_name[e.prismatic] = e.name;
           }
           if (csv) {
             csv << accessories << ',' << weighting << ',' << c.name << ',' << e.name << ','
@@ -309,11 +324,21 @@ int Run() {
           std::snprintf(weakest_text, sizeof(weakest_text), "%.0f%% %s, %.2f mm",
                         100.0 * weakest->inlier_share, weakest->link.c_str(), 1e3 * weakest->rms);
         }
+        char worst_text[160];
+        if (worst_name[1].empty() || !worst_name[0].empty()) {
+          std::snprintf(worst_text, sizeof(worst_text), "%.4f° (%s)", worst[0],
+                        worst_name[0].c_str());
+        }
+        if (!worst_name[1].empty()) {  // a prismatic joint too, or only those
+          const std::string revolute = worst_name[0].empty() ? "" : worst_text + std::string(", ");
+          std::snprintf(worst_text, sizeof(worst_text), "%s%.3f mm (%s)", revolute.c_str(),
+                        worst[1], worst_name[1].c_str());
+        }
         std::printf(
-            "| %s | %s | %.2f M | %.4f° (%s)%s | %.3f mm / %.4f° | %s | %s | %.1f s (%.1f, "
+            "| %s | %s | %.2f M | %s%s | %.3f mm / %.4f° | %s | %s | %.1f s (%.1f, "
             "%.1f+%.1f, %.1f) |\n",
-            c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points), worst,
-            worst_name.c_str(), record.failed ? " FAILED" : "",
+            c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points),
+            worst_text, record.failed ? " FAILED" : "",
             1e3 * record.errors.base_translation, record.errors.base_rotation / kDeg,
             fit.ok ? "ok" : ("not ok: " + fit.message).c_str(), weakest_text, fit.timings.total,
             fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain);

@@ -23,6 +23,7 @@ bool JointSweepOptions::IsValid(std::string* error) const {
   if (!(tau_dist > 0.0)) return fail("tau_dist must be > 0");
   if (!(max_distance >= tau_dist)) return fail("max_distance must be >= tau_dist");
   if (!(occluded_loss >= 0.0)) return fail("occluded_loss must be >= 0");
+  if (!(max_view_gap >= 0.0)) return fail("max_view_gap must be >= 0");
   if (!(visibility_tolerance >= 0.0)) return fail("visibility_tolerance must be >= 0");
   if (lattice_window < 0) return fail("lattice_window must be >= 0");
   if (!(distinct_revolute > 0.0) || !(distinct_prismatic > 0.0)) {
@@ -49,7 +50,8 @@ double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_lin
     const Eigen::Vector3d p = R * samples.points[i].cast<double>() + t;
     if (have_normals) {
       const Eigen::Vector3d n = R * samples.normals[i].cast<double>();
-      if (visibility_->BestView(p, n, options.visibility_tolerance) != ScanView::kSeen) {
+      if (visibility_->BestView(p, n, options.visibility_tolerance, /*facing_only=*/false,
+                                options.max_view_gap) != ScanView::kSeen) {
         loss += options.occluded_loss;
         continue;
       }
@@ -129,8 +131,8 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
     *best_loss = loss;
   };
   const size_t n = qs.size();
-  const size_t best = static_cast<size_t>(std::min_element(losses.begin(), losses.end()) -
-                                          losses.begin());
+  const size_t best =
+      static_cast<size_t>(std::min_element(losses.begin(), losses.end()) - losses.begin());
   refine(qs[best], losses[best], &summary->q, &summary->loss);
 
   // The runner-up: the lowest coarse local minimum at least `distinct` from

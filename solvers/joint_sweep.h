@@ -48,6 +48,13 @@ struct JointSweepOptions {
   double occluded_loss = 0.01;
   // Occlusion tolerance of the visibility test [m].
   double visibility_tolerance = 0.01;
+  // A sample on a face seen so obliquely that the scan's points on it lie
+  // farther apart than this [m] counts as hidden (ScanView::kGrazing; 0:
+  // off). Its nearest scan point is then often beyond tau_dist although the
+  // face is right there: a conveyor's lifter beam seen edge-on by scanners
+  // at its height scored lower 1 cm off its true height than at it (5 mm
+  // spacing; FitOptionsFor sets 1 cm for conveyance systems).
+  double max_view_gap = 0.0;
   // --weighting=uniform: w_edge = 1 in Eq. (9).
   bool uniform_weights = false;
   int lattice_window = 2;  // CorrespondenceOptions::window
@@ -61,13 +68,13 @@ struct JointSweepOptions {
 };
 
 struct JointSweepSummary {
-  double q = 0.0;          // best joint value [rad] or [m]
-  double loss = 0.0;       // its total Eq. (9) loss [m]
+  double q = 0.0;     // best joint value [rad] or [m]
+  double loss = 0.0;  // its total Eq. (9) loss [m]
   // The runner-up (JointSweepOptions::distinct_*), refined like the best.
   bool has_runner_up = false;
   double runner_up_q = 0.0;
   double runner_up_loss = std::numeric_limits<double>::infinity();
-  int evaluations = 0;     // joint values scored
+  int evaluations = 0;  // joint values scored
   double seconds = 0.0;
 };
 

@@ -17,6 +17,7 @@ namespace edgefit {
 // The view one scanner has of a surface point, worst to best.
 enum class ScanView {
   kBackFacing,  // the outward normal faces away from the scanner
+  kGrazing,     // facing it so obliquely that its scan points lie farther apart than max_gap
   kOutside,     // outside the scan's angular window
   kOccluded,    // the scan's range at the point's cell is shorter by more than the tolerance
   kEmpty,       // the ray through the point returned nothing (sky, dropout)
@@ -30,18 +31,22 @@ class ScanVisibility {
 
   // The view of scan s of q_world with outward unit normal n_world;
   // tolerance [m]: how much nearer than q the scan's range at q's cell may
-  // be before q counts as occluded. Unorganized scans or scans without a
-  // lattice have no range image: facing points are kSeen.
+  // be before q counts as occluded. max_gap [m] (0: off): a surface seen at
+  // incidence angle theta from range r with the lattice's angular step d
+  // holds scan points about r d / cos(theta) apart along it; above max_gap
+  // the point is kGrazing (a face seen edge-on has too few points to say
+  // where it is). Unorganized scans or scans without a lattice have no range
+  // image: facing points are kSeen.
   ScanView View(size_t s, const Eigen::Vector3d& q_world, const Eigen::Vector3d& n_world,
-                double tolerance) const;
+                double tolerance, double max_gap = 0.0) const;
   // The best view over all scans. facing_only: only the normal test (a
   // facing point is kSeen without looking at the range image).
   ScanView BestView(const Eigen::Vector3d& q_world, const Eigen::Vector3d& n_world,
-                    double tolerance, bool facing_only = false) const;
+                    double tolerance, bool facing_only = false, double max_gap = 0.0) const;
 
  private:
   const ScanSet* scans_;
-  std::vector<Pose> T_scanner_world_;                  // per scan
+  std::vector<Pose> T_scanner_world_;                   // per scan
   std::vector<Eigen::Vector3d> scanner_origins_world_;  // per scan
 };
 

@@ -63,6 +63,12 @@ bool WeightedIcpOptions::IsValid(std::string* error) const {
   if (!(lambda >= 0.0) || !std::isfinite(lambda)) return fail("lambda must be finite and >= 0");
   if (solver_iterations < 1) return fail("solver_iterations must be at least 1");
   if (!(final_gate > 0.0) || !std::isfinite(final_gate)) return fail("final_gate must be > 0");
+  if (!(quality_max_view_gap >= 0.0) || !std::isfinite(quality_max_view_gap)) {
+    return fail("quality_max_view_gap must be finite and >= 0");
+  }
+  if (!(quality_reach >= 0.0) || !std::isfinite(quality_reach)) {
+    return fail("quality_reach must be finite and >= 0");
+  }
   if (!(crop_margin >= 0.0) || !std::isfinite(crop_margin)) {
     return fail("crop_margin must be finite and >= 0");
   }
@@ -118,7 +124,8 @@ WeightedIcp::WeightedIcp(const ScanSet* scans, CorrespondenceSearch* search,
 }
 
 void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
-                                WeightedIcpOptions::Visibility visibility, double gate) {
+                                WeightedIcpOptions::Visibility visibility, double gate,
+                                double max_view_gap) {
   const Eigen::Matrix3d R = T_world_link.linear();
   const Eigen::Vector3d& t = T_world_link.translation();
   const bool has_normals = samples.normals.size() == samples.points.size();
@@ -131,7 +138,7 @@ void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_wor
     if (filter) {
       const Eigen::Vector3d n = R * samples.normals[i].cast<double>();
       const bool facing_only = visibility == WeightedIcpOptions::Visibility::kFacing;
-      if (visibility_.BestView(q, n, gate, facing_only) != ScanView::kSeen) continue;
+      if (visibility_.BestView(q, n, gate, facing_only, max_view_gap) != ScanView::kSeen) continue;
     }
     p_used_link_.push_back(samples.points[i]);
     if (has_normals) n_used_link_.push_back(samples.normals[i]);
@@ -203,7 +210,7 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
   const double final_gate = std::min(options.final_gate, options.correspondence.max_distance);
   summary->stop_reason = IcpStopReason::kMaxIterations;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    SelectAndPose(samples, T_world_link, options.visibility, gated.max_distance);
+    SelectAndPose(samples, T_world_link, options.visibility, gated.max_distance, 0.0);
     search_->Find(q_world_, crop_world, gated, &correspondences_);
     if (correspondences_.size() < static_cast<size_t>(options.min_correspondences)) {
       summary->stop_reason = IcpStopReason::kTooFewCorrespondences;
@@ -248,16 +255,31 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
 void WeightedIcp::Measure(const SurfaceSamples& samples, const Pose& T_world_link,
                           const WeightedIcpOptions& options, double gate,
                           const Eigen::AlignedBox3d& crop_world, WeightedIcpSummary* summary) {
+  const bool plane =
+      options.point_to_plane && options.plane_normals == WeightedIcpOptions::PlaneNormals::kModel &&
+      samples.normals.size() == samples.points.size() && options.quality_reach > gate;
   CorrespondenceOptions gated = options.correspondence;
-  gated.max_distance = gate;
-  SelectAndPose(samples, T_world_link, options.visibility, gate);
+  gated.max_distance = plane ? options.quality_reach : gate;
+  SelectAndPose(samples, T_world_link, options.visibility, gate, options.quality_max_view_gap);
   summary->visible_points = q_world_.size();
   search_->Find(q_world_, crop_world, gated, &correspondences_);
+  const Eigen::Matrix3d R = T_world_link.linear();
   double sum_squared = 0.0;
+  size_t inliers = 0;
   for (const Correspondence& m : correspondences_) {
-    sum_squared += static_cast<double>(m.distance) * static_cast<double>(m.distance);
+    double d = m.distance;
+    if (plane) {
+      const size_t k = static_cast<size_t>(m.source);
+      const Eigen::Vector3d n = R * n_used_link_[k].cast<double>();
+      const Eigen::Vector3d target =
+          scans_->scans[static_cast<size_t>(m.scan)].PointWorld(static_cast<size_t>(m.cell));
+      d = std::abs(n.dot(target - q_world_[k].cast<double>()));
+      if (d > gate) continue;
+    }
+    sum_squared += d * d;
+    ++inliers;
   }
-  summary->inliers = correspondences_.size();
+  summary->inliers = inliers;
   summary->inlier_share =
       summary->visible_points > 0
           ? static_cast<double>(summary->inliers) / static_cast<double>(summary->visible_points)

@@ -9,3 +9,8 @@ edgefit_add_test(robot_bodies_test
   SOURCES pipeline/robot_bodies_test.cc
   LIBS edgefit::pipeline edgefit::model)
 target_include_directories(robot_bodies_test PRIVATE ${PROJECT_SOURCE_DIR}/src/pipeline)
+# The conveyance pipeline (paper Sec. 6) on a small virtual scan of the
+# bundled conveyor; --kind=auto.
+edgefit_add_test(conveyance_fit_test SINGLE_PROCESS
+  SOURCES pipeline/conveyance_fit_test.cc
+  LIBS edgefit::pipeline edgefit::scanner edgefit::model glog::glog)

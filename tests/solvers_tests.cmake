@@ -1,11 +1,14 @@
 # Weighted, constrained ICP engine (paper Sec. 5.1.2, 5.2.2, 6.2.2):
 # synthetic recovery to 1e-6 and within noise, parameterisations, stops,
-# determinism; on virtual scans: the cable-tube outlier case with edges and
+# determinism; the height map's convex tips and the symmetry axis (6.1);
+# on virtual scans: the cable-tube outlier case with edges and
 # the Eq. (9) joint sweep; the rough base registration (Sec. 5.1.1).
 edgefit_add_test(solvers_test
   SOURCES
     solvers/link_motion_test.cc
     solvers/weighted_icp_test.cc
+    solvers/height_map_test.cc
+    solvers/symmetry_axis_test.cc
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
 edgefit_add_test(solvers_scan_test SINGLE_PROCESS
   SOURCES solvers/tube_outlier_test.cc solvers/joint_sweep_test.cc solvers/base_rough_test.cc

@@ -21,12 +21,16 @@
 #include "edgefit/model/calibrated_urdf.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/mesh_ply.h"
+#include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit_errors.h"
 #include "edgefit/pipeline/model_points.h"
 #include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/truth.h"
 
-DEFINE_string(kind, "auto", "auto | articulated | conveyance (conveyance: not yet, issue 7).");
+DEFINE_string(kind, "auto",
+              "auto | articulated | conveyance: the pipeline (conveyance: the base's rough pose "
+              "from the arm tips, Sec. 6.1); auto takes a model whose joints are all prismatic "
+              "for a conveyance system.");
 DEFINE_string(weighting, "edge", "edge: Eq. (6) weights in every stage; uniform: all 1.");
 DEFINE_string(loss, "trivial",
               "Loss of the precise ICP residuals: trivial, huber, cauchy, soft_l1, arctan, tukey.");
@@ -101,18 +105,37 @@ std::string JointStatesYaml(const KinematicModel& model, const std::vector<doubl
          "]\nposition: [" + positions.str() + "]\nvelocity: []\neffort: []\n";
 }
 
+// quality.base_rough of result.json: the method that gave the rough pose
+// and what it found.
+json BaseRoughJson(const RobotFitResult& fit) {
+  if (fit.base_rough_method == RobotFitOptions::BaseRoughMethod::kArmTips) {
+    return {{"method", "arm_tips"},
+            {"floor_z", fit.arm_tips.floor_z},
+            {"scan_tips", fit.arm_tips.scan_tips.size()},
+            {"symmetric_scan_tips", fit.arm_tips.symmetric_scan_tips},
+            {"model_tips", fit.arm_tips.model_tips.size()},
+            {"matches", fit.arm_tips.matches},
+            {"poses_scored", fit.arm_tips.scored}};
+  }
+  return {{"method", "cross_sections"},
+          {"floor_z", fit.base_rough.floor_z},
+          {"scan_corners", fit.base_rough.scan_corners},
+          {"model_corners", fit.base_rough.model_corners},
+          {"hypotheses", fit.base_rough.hypotheses},
+          {"inlier_share", fit.base_rough.inlier_share}};
+}
+
 int RunFit(const Command& command) {
   if (FLAGS_urdf.empty()) return BadInput(command, "--urdf is required");
   if (FLAGS_scan.empty()) return BadInput(command, "--scan is required");
   if (FLAGS_out.empty()) return BadInput(command, "--out is required");
-  if (FLAGS_kind == "conveyance") {
-    return BadInput(command, "--kind=conveyance is not implemented yet (issue 7)");
-  }
-  if (FLAGS_kind != "auto" && FLAGS_kind != "articulated") {
+  if (FLAGS_kind != "auto" && FLAGS_kind != "articulated" && FLAGS_kind != "conveyance") {
     return BadInput(command, "--kind must be auto, articulated or conveyance");
   }
-  RobotFitOptions options;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFromFlags(&options));
+  {  // the flags alone, before any file is read
+    RobotFitOptions options;
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFromFlags(&options));
+  }
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   const auto start = std::chrono::steady_clock::now();
 
@@ -121,15 +144,10 @@ int RunFit(const Command& command) {
   KinematicModel model;
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
-  bool prismatic_only = true;
-  for (const Joint& j : model.joints()) {
-    if (j.IsIndependent() && j.type != JointType::kPrismatic) prismatic_only = false;
-  }
-  if (FLAGS_kind == "auto" && prismatic_only) {
-    return BadInput(command, FLAGS_urdf +
-                                 ": a conveyance system (prismatic joints only); "
-                                 "its pipeline is not implemented yet (issue 7)");
-  }
+  AssetKind kind = AssetKind::kArticulated;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseAssetKind(FLAGS_kind, model, &kind));
+  RobotFitOptions options = FitOptionsFor(kind);
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFromFlags(&options));
   ScanSet scans;
   for (const std::string& path : SplitList(FLAGS_scan)) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
@@ -173,7 +191,7 @@ int RunFit(const Command& command) {
       per_link[b.link]["alternative_margin_m"] = b.ambiguity_margin;
     }
   }
-  json result = {{"kind", "articulated"},
+  json result = {{"kind", AssetKindName(kind)},
                  {"base",
                   {{"xyz", {xyz.x(), xyz.y(), xyz.z()}},
                    {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
@@ -190,12 +208,7 @@ int RunFit(const Command& command) {
                   {{"per_link", per_link},
                    {"ok", fit.ok},
                    {"message", fit.message},
-                   {"base_rough",
-                    {{"floor_z", fit.base_rough.floor_z},
-                     {"scan_corners", fit.base_rough.scan_corners},
-                     {"model_corners", fit.base_rough.model_corners},
-                     {"hypotheses", fit.base_rough.hypotheses},
-                     {"inlier_share", fit.base_rough.inlier_share}}}}},
+                   {"base_rough", BaseRoughJson(fit)}}},
                  {"options",
                   {{"weighting", FLAGS_weighting},
                    {"w_high", FLAGS_w_high},

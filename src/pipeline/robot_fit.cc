@@ -54,8 +54,9 @@ bool RobotFitOptions::IsValid(std::string* error) const {
   }
   if (max_icp_samples < 100 || max_sweep_samples < 100 || max_subtree_icp_samples < 100)
     return fail("sample budgets must be >= 100");
-  if (!base_rough.IsValid(error) || !base_icp.IsValid(error) || !sweep.IsValid(error) ||
-      !joint_icp.IsValid(error) || !subtree_icp.IsValid(error)) {
+  if (!base_rough.IsValid(error) || !conveyance_base_rough.IsValid(error) ||
+      !base_icp.IsValid(error) || !sweep.IsValid(error) || !joint_icp.IsValid(error) ||
+      !subtree_icp.IsValid(error)) {
     return false;
   }
   if (!(min_inlier_share >= 0.0 && min_inlier_share <= 1.0)) {
@@ -488,6 +489,44 @@ class ChainFitter {
   JointSweepOptions sweep_options_;
 };
 
+// The base's rough stage by options.base_rough_method into
+// result->base_rough (and result->arm_tips); arm tips that find no
+// placement fall back to the cross sections.
+Status RoughBase(const ScanSet& scans, const std::vector<std::vector<Eigen::Vector3f>>& normals,
+                 const KinematicModel& model, const TriangleMesh& base_mesh,
+                 const RobotFitOptions& options, const BasePoseLoss& base_loss,
+                 const std::function<void(const std::string&)>& say, RobotFitResult* result) {
+  using Method = RobotFitOptions::BaseRoughMethod;
+  if (options.base_rough_method == Method::kArmTips) {
+    say("base: rough registration (arm tips in a height map, symmetry axis)");
+    ConveyanceBaseRoughOptions tips = options.conveyance_base_rough;
+    tips.symmetry.seed = options.seed;
+    const Status status = FitConveyanceBaseRough(scans, normals, model, base_mesh, tips, base_loss,
+                                                 &result->arm_tips);
+    if (status.ok()) {
+      result->base_rough_method = Method::kArmTips;
+      result->base_rough.T_world_base = result->arm_tips.T_world_base;
+      result->base_rough.candidates = result->arm_tips.candidates;
+      result->base_rough.floor_z = result->arm_tips.floor_z;
+      result->base_rough.seconds = result->arm_tips.seconds;
+      char line[200];
+      std::snprintf(line, sizeof(line),
+                    "base: %zu scan tips (%d paired), %zu model tips, %d matches, %d poses scored",
+                    result->arm_tips.scan_tips.size(), result->arm_tips.symmetric_scan_tips,
+                    result->arm_tips.model_tips.size(), result->arm_tips.matches,
+                    result->arm_tips.scored);
+      say(line);
+      return Status::Ok();
+    }
+    say("base: " + status.message() + "; trying cross-section corners (Sec. 5.1.1)");
+  }
+  say("base: rough registration (cross-section corners, RANSAC)");
+  BaseRoughOptions rough = options.base_rough;
+  rough.seed = options.seed;
+  result->base_rough_method = Method::kCrossSections;
+  return FitBaseRough(scans, normals, base_mesh, rough, &result->base_rough);
+}
+
 }  // namespace
 
 Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFitOptions& options,
@@ -556,10 +595,15 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     for (size_t k = 0; k < base.links.size(); ++k) {
       base_mesh.Append(model.links()[static_cast<size_t>(base.links[k])].mesh, base.T_body_link[k]);
     }
-    BaseRoughOptions rough = options.base_rough;
-    rough.seed = options.seed;
-    say("base: rough registration (cross-section corners, RANSAC)");
-    const Status status = FitBaseRough(scans, edges.normals, base_mesh, rough, &result->base_rough);
+    // The Eq. (9) loss of the base alone, with the scan's visibility: it
+    // tells a symmetric base's turns apart (parts seen, or space seen empty,
+    // on one side), which the 2D scores cannot.
+    SurfaceSamples base_sweep;
+    AppendBodySamples(base, sweep_samples, Pose::Identity(), &base_sweep);
+    ThinSamples(options.max_sweep_samples, &base_sweep);
+    auto base_loss = [&](const Pose& T) { return sweep.LossAt(base_sweep, T, sweep_options); };
+    const Status status =
+        RoughBase(scans, edges.normals, model, base_mesh, options, base_loss, say, result);
     if (!status.ok()) {
       result->ok = false;
       result->message = status.message();
@@ -567,15 +611,9 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
       result->timings.total = Since(start);
       return Status::Ok();
     }
-    // The 2D score cannot tell a symmetric base's turns apart; the 3D
-    // Eq. (9) loss with the scan's visibility can (parts seen, or space
-    // seen empty, on one side).
-    SurfaceSamples base_sweep;
-    AppendBodySamples(base, sweep_samples, Pose::Identity(), &base_sweep);
-    ThinSamples(options.max_sweep_samples, &base_sweep);
     double best_loss = std::numeric_limits<double>::infinity();
     for (const Pose& candidate : result->base_rough.candidates) {
-      const double loss = sweep.LossAt(base_sweep, candidate, sweep_options);
+      const double loss = base_loss(candidate);
       if (loss < best_loss) {
         best_loss = loss;
         T_world_base = candidate;

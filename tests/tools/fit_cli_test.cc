@@ -65,6 +65,29 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   EXPECT_EQ(valid + removed, original_valid);
 }
 
+TEST_F(CliTest, FitTellsAConveyorFromItsModel) {
+  // --kind=auto: a model with prismatic joints only is a conveyance system;
+  // its base's rough pose comes from the arm tips (paper Sec. 6.1).
+  const std::string conveyor = std::string(EDGEFIT_SOURCE_DIR) + "/assets/conveyor/conveyor.urdf";
+  const std::string scan = Path("conveyor.ptx"), truth = Path("truth.json");
+  ASSERT_EQ(Run("scan --urdf=" + conveyor + " --random_pose --seed=3 --base=0.3,0.2,-70 "
+                "--spacing_mm=6 --out=" + scan + " --truth=" + truth)
+                .exit_code,
+            0);
+  const RunResult r =
+      Run("fit --urdf=" + conveyor + " --scan=" + scan + " --truth=" + truth + " --out=" +
+          Path("result.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
+  EXPECT_EQ(result["kind"], "conveyance");
+  EXPECT_EQ(result["quality"]["base_rough"]["method"], "arm_tips");
+  EXPECT_TRUE(result["quality"]["ok"].get<bool>()) << result["quality"].dump();
+  EXPECT_LT(result["errors"]["base_translation_m"].get<double>(), 0.001);
+  for (const auto& [joint, error] : result["errors"]["joints"].items()) {
+    EXPECT_LT(error.get<double>(), 0.001) << joint;
+  }
+}
+
 TEST_F(CliTest, FitBadInput) {
   const std::string sample = std::string(EDGEFIT_SOURCE_DIR) + "/assets/samples/two_scans.ptx";
   const std::string conveyor = std::string(EDGEFIT_SOURCE_DIR) + "/assets/conveyor/conveyor.urdf";
@@ -78,7 +101,8 @@ TEST_F(CliTest, FitBadInput) {
                  "--weighting");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --init=1,2", "--init");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --loss=l3", "l3");
-  ExpectBadInput("fit --urdf=" + conveyor + " --scan=" + sample + out, "conveyance");
+  ExpectBadInput("fit --urdf=" + conveyor + " --scan=" + sample + out + " --kind=crane",
+                 "--kind must be auto, articulated or conveyance");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out +
                      " --background_distance_mm=-1",
                  "--background_distance_mm");

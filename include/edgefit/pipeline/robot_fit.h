@@ -1,10 +1,16 @@
-// Fits an articulated robot (a KinematicModel, end effectors attached) to a
-// scan, paper Sec. 5: edges (Sec. 4), the base link rough (5.1.1, cross-
+// Fits an articulated robot (a KinematicModel, end effectors attached) or a
+// conveyance system (Sec. 6: FitOptionsFor in asset_kind.h) to a scan,
+// paper Sec. 5: edges (Sec. 4), the base link rough (5.1.1, cross-
 // section corners + RANSAC) and precise (5.1.2, edge-weighted ICP), then
 // every independent joint parents first: the rough Eq. (9) sweep over its
 // range (5.2.1; a rotationally symmetric link adds its child's loss) and the
 // precise joint-constrained weighted ICP (5.2.2); end-effector joints the
 // same way (5.3), mimic and loop-closure joints from the fitted ones.
+//
+// A conveyance system differs only in the base's rough stage (Sec. 6.1:
+// arm tips in a height map, their symmetry axis); its prismatic joints are
+// swept and fitted like any joint (6.2.1-6.2.2), branched trees parents
+// first.
 //
 // A "body" is the link moved by a joint together with every link fixed to
 // it (fixed joints, attached end effectors): they move as one.
@@ -23,6 +29,7 @@
 #include "edgefit/model/kinematic_model.h"
 #include "edgefit/scan/organized_scan.h"
 #include "solvers/base_rough.h"
+#include "solvers/conveyance_base_rough.h"
 #include "solvers/joint_sweep.h"
 #include "solvers/weighted_icp.h"
 
@@ -42,7 +49,13 @@ struct RobotFitOptions {
   // weld_low scene and took a second off the chain.
   int max_subtree_icp_samples = 15000;
   uint64_t seed = 1;  // sampling and RANSAC
+  // The base's rough stage: cross-section corners (Sec. 5.1.1, robots) or
+  // arm tips and their symmetry axis (Sec. 6.1, conveyance systems). When
+  // the tips find no placement, the cross sections are tried.
+  enum class BaseRoughMethod { kCrossSections, kArmTips };
+  BaseRoughMethod base_rough_method = BaseRoughMethod::kCrossSections;
   BaseRoughOptions base_rough;
+  ConveyanceBaseRoughOptions conveyance_base_rough;
   // Base precise ICP (6-DoF); its first gate covers the rough error.
   WeightedIcpOptions base_icp = DefaultBaseIcp();
   JointSweepOptions sweep;
@@ -149,8 +162,13 @@ struct RobotFitTimings {
 struct RobotFitResult {
   Pose T_world_base = Pose::Identity();  // root link in the world frame
   std::vector<double> q;                 // every joint, KinematicModel order
+  // The base's rough stage: which method gave the pose, its result (the
+  // pose, candidates and floor are in base_rough for either method).
+  RobotFitOptions::BaseRoughMethod base_rough_method =
+      RobotFitOptions::BaseRoughMethod::kCrossSections;
   BaseRoughResult base_rough;
-  std::vector<BodyQuality> bodies;  // base first, then joints in fit order
+  ConveyanceBaseRoughResult arm_tips;  // kArmTips
+  std::vector<BodyQuality> bodies;     // base first, then joints in fit order
   RobotFitTimings timings;
   bool ok = false;
   std::string message;  // why not ok
