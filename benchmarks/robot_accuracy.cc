@@ -1,6 +1,6 @@
 // Fit accuracy against the virtual scanner's ground truth (issues 6 and 7,
-// paper Sec. 7.3), for robots and conveyance systems (--kind): named postures and seeded random ones, each on a random
-// base pose, scanned with and without accessories, fitted with edge and/or
+// paper Sec. 7.3), for robots and conveyance systems (--kind): named postures and seeded random
+// ones, each on a random base pose, scanned with and without accessories, fitted with edge and/or
 // uniform weights. Prints a row per fit, then per configuration the joint
 // errors (mean, 95th percentile, max), the base errors, failed fits (a
 // revolute joint off by more than 0.5 degrees or a prismatic one by more
@@ -276,8 +276,8 @@ int Run() {
         RobotFitOptions options = FitOptionsFor(kind);
         options.uniform_weights = weighting == "uniform";
         options.edges.w_high = FLAGS_w_high;
-        status = ParseJointParameterization(FLAGS_parameterization,
-                                            &options.joint_icp.parameterization);
+        status =
+            ParseJointParameterization(FLAGS_parameterization, &options.joint_icp.parameterization);
         CHECK(status.ok()) << status.message();
         options.subtree_icp.parameterization = options.joint_icp.parameterization;
         options.base_icp.visibility = options.joint_icp.visibility =
@@ -338,10 +338,10 @@ int Run() {
             "| %s | %s | %.2f M | %s%s | %.3f mm / %.4f° | %s | %s | %.1f s (%.1f, "
             "%.1f+%.1f, %.1f) |\n",
             c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points),
-            worst_text, record.failed ? " FAILED" : "",
-            1e3 * record.errors.base_translation, record.errors.base_rotation / kDeg,
-            fit.ok ? "ok" : ("not ok: " + fit.message).c_str(), weakest_text, fit.timings.total,
-            fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain);
+            worst_text, record.failed ? " FAILED" : "", 1e3 * record.errors.base_translation,
+            record.errors.base_rotation / kDeg, fit.ok ? "ok" : ("not ok: " + fit.message).c_str(),
+            weakest_text, fit.timings.total, fit.timings.edges, fit.timings.base_rough,
+            fit.timings.base_precise, fit.timings.chain);
         std::fflush(stdout);
         records[weighting].push_back(record);
       }

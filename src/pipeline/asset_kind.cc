@@ -29,6 +29,7 @@ RobotFitOptions FitOptionsFor(AssetKind kind) {
   if (kind == AssetKind::kConveyance) {
     options.base_rough_method = RobotFitOptions::BaseRoughMethod::kArmTips;
     options.sweep.max_view_gap = 0.01;
+    options.base_alternatives = 1;
     for (WeightedIcpOptions* icp : {&options.base_icp, &options.joint_icp, &options.subtree_icp}) {
       icp->quality_max_view_gap = 0.01;
     }

@@ -52,6 +52,9 @@ bool RobotFitOptions::IsValid(std::string* error) const {
       !(resweep_window_rad > 0.0)) {
     return fail("max_resweeps must be >= 0 and the resweep tolerances and window > 0");
   }
+  if (base_alternatives < 0 || !(base_alternative_loss >= 0.0)) {
+    return fail("base_alternatives and base_alternative_loss must be >= 0");
+  }
   if (max_icp_samples < 100 || max_sweep_samples < 100 || max_subtree_icp_samples < 100)
     return fail("sample budgets must be >= 100");
   if (!base_rough.IsValid(error) || !conveyance_base_rough.IsValid(error) ||
@@ -112,6 +115,14 @@ BodyQuality Quality(const KinematicModel& model, const Body& body, const Surface
   quality.icp_iterations = summary.iterations;
   quality.ok = summary.inlier_share >= options.min_inlier_share && summary.rms <= options.max_rms;
   return quality;
+}
+
+// Two rough base poses are different answers when they differ by more than
+// 5 degrees in yaw or 5 cm in position (the precise ICP's reach).
+bool IsDistinctPose(const Pose& a, const Pose& b) {
+  const Pose d = a.inverse() * b;
+  return Eigen::AngleAxisd(d.linear()).angle() > 5.0 * M_PI / 180.0 ||
+         d.translation().norm() > 0.05;
 }
 
 // What the chain pass found for one independent joint.
@@ -329,16 +340,6 @@ class ChainFitter {
     }
   }
 
- private:
-  // in[l]: link l is `link` or below it (link -1: every link).
-  std::vector<bool> SubtreeMask(int link) const {
-    std::vector<bool> in(model_.links().size(), link < 0);
-    if (link >= 0) {
-      for (const int l : SubtreeLinks(model_, link)) in[static_cast<size_t>(l)] = true;
-    }
-    return in;
-  }
-
   // The Eq. (9) loss of every link at or below `link` at joint values q;
   // *samples counts the sweep samples scored.
   double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,
@@ -353,6 +354,16 @@ class ChainFitter {
       *samples += s.size();
     }
     return loss;
+  }
+
+ private:
+  // in[l]: link l is `link` or below it (link -1: every link).
+  std::vector<bool> SubtreeMask(int link) const {
+    std::vector<bool> in(model_.links().size(), link < 0);
+    if (link >= 0) {
+      for (const int l : SubtreeLinks(model_, link)) in[static_cast<size_t>(l)] = true;
+    }
+    return in;
   }
 
   // Prismatic joints keep point-to-point residuals: a part sliding along
@@ -577,8 +588,9 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
                          "' has no mesh to register");
   }
   stage = std::chrono::steady_clock::now();
-  Pose T_world_base = options.T_world_base_initial;
+  std::vector<Pose> roughs;  // the rough base poses fitted on, best first
   if (options.has_initial_base) {
+    Pose T_world_base = options.T_world_base_initial;
     double floor_z = 0.0;
     const Status status = EstimateFloorHeight(scans, edges.normals, Eigen::AlignedBox3d(),
                                               options.base_rough.floor_normal_cos, &floor_z);
@@ -590,6 +602,7 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
       return Status::Ok();
     }
     T_world_base.translation().z() += floor_z;
+    roughs.push_back(T_world_base);
   } else {
     TriangleMesh base_mesh;
     for (size_t k = 0; k < base.links.size(); ++k) {
@@ -611,51 +624,98 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
       result->timings.total = Since(start);
       return Status::Ok();
     }
-    double best_loss = std::numeric_limits<double>::infinity();
+    // Candidates by the base's loss, best first.
+    std::vector<std::pair<double, Pose>> by_loss;
     for (const Pose& candidate : result->base_rough.candidates) {
-      const double loss = base_loss(candidate);
-      if (loss < best_loss) {
-        best_loss = loss;
-        T_world_base = candidate;
-      }
+      by_loss.emplace_back(base_loss(candidate), candidate);
     }
-    result->base_rough.T_world_base = T_world_base;
+    std::stable_sort(by_loss.begin(), by_loss.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [loss, candidate] : by_loss) {
+      const double margin = (loss - by_loss.front().first) / static_cast<double>(base_sweep.size());
+      bool distinct = true;
+      for (const Pose& kept : roughs) distinct = distinct && IsDistinctPose(kept, candidate);
+      if (!roughs.empty() && (!distinct || margin >= options.base_alternative_loss)) continue;
+      if (static_cast<int>(roughs.size()) > options.base_alternatives) break;
+      if (!roughs.empty()) {
+        char line[160];
+        std::snprintf(line, sizeof(line),
+                      "base: a distinct rough pose only %.3f mm/sample worse: fitted too",
+                      1e3 * margin);
+        say(line);
+      }
+      roughs.push_back(candidate);
+    }
+    result->base_rough.T_world_base = roughs.front();
     result->timings.base_rough = Since(stage);
   }
-  stage = std::chrono::steady_clock::now();
-  say("base: precise weighted ICP");
-  LinkState base_state;
-  base_state.T_world_link = T_world_base;
-  WeightedIcpSummary summary;
-  EDGEFIT_RETURN_IF_ERROR(
-      icp.Fit(base_samples, LinkMotion::Free(), base_icp, &base_state, &summary));
-  result->T_world_base = base_state.T_world_link;
-  result->bodies.push_back(Quality(model, base, base_samples, summary, options));
-  result->timings.base_precise = Since(stage);
 
-  // Sec. 5.2-5.3: the joints, parents first.
-  stage = std::chrono::steady_clock::now();
+  // Sec. 5.1.2 and 5.2-5.3 from each rough base pose kept: the base's
+  // precise ICP, then the joints, parents first.
   ChainFitter chain(model, options, icp_samples, sweep_samples, &icp, &sweep, say);
-  std::vector<double> q;
-  std::vector<JointRecord> records;
-  EDGEFIT_RETURN_IF_ERROR(chain.FitJoints(result->T_world_base, &q, &records));
-  if (options.refine_subtrees) {
-    EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
-    bool switched = false;
-    EDGEFIT_RETURN_IF_ERROR(chain.CheckAlternatives(result->T_world_base, &records, &q, &switched));
-    for (int pass = 0; switched && pass < options.max_passes_after_switch; ++pass) {
-      const std::vector<double> before = q;
-      EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(result->T_world_base, 0, -1, &records, &q));
-      switched =
-          AnyJointMoved(model, before, q, options.settle_tolerance_rad, options.settle_tolerance_m);
+  struct Attempt {
+    Pose T_world_base = Pose::Identity();
+    WeightedIcpSummary base;
+    std::vector<double> q;
+    std::vector<JointRecord> records;
+    double loss = 0.0;  // Eq. (9) of the whole model
+  };
+  auto fit_from = [&](const Pose& T_rough, Attempt* attempt) -> Status {
+    auto stage = std::chrono::steady_clock::now();
+    say("base: precise weighted ICP");
+    LinkState base_state;
+    base_state.T_world_link = T_rough;
+    EDGEFIT_RETURN_IF_ERROR(
+        icp.Fit(base_samples, LinkMotion::Free(), base_icp, &base_state, &attempt->base));
+    attempt->T_world_base = base_state.T_world_link;
+    result->timings.base_precise += Since(stage);
+    stage = std::chrono::steady_clock::now();
+    const Pose& T = attempt->T_world_base;
+    std::vector<double>& q = attempt->q;
+    std::vector<JointRecord>& records = attempt->records;
+    EDGEFIT_RETURN_IF_ERROR(chain.FitJoints(T, &q, &records));
+    if (options.refine_subtrees) {
+      EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(T, 0, -1, &records, &q));
+      bool switched = false;
+      EDGEFIT_RETURN_IF_ERROR(chain.CheckAlternatives(T, &records, &q, &switched));
+      for (int pass = 0; switched && pass < options.max_passes_after_switch; ++pass) {
+        const std::vector<double> before = q;
+        EDGEFIT_RETURN_IF_ERROR(chain.RefineSubtrees(T, 0, -1, &records, &q));
+        switched = AnyJointMoved(model, before, q, options.settle_tolerance_rad,
+                                 options.settle_tolerance_m);
+      }
+    }
+    chain.CheckPinning(T, &records, q);
+    size_t samples = 0;
+    attempt->loss = chain.SubtreeLoss(T, q, model.root_link(), &samples);
+    result->timings.chain += Since(stage);
+    return Status::Ok();
+  };
+  Attempt best;
+  EDGEFIT_RETURN_IF_ERROR(fit_from(roughs.front(), &best));
+  for (size_t k = 1; k < roughs.size(); ++k) {
+    say("base: the whole chain from alternative rough pose " + std::to_string(k));
+    Attempt other;
+    EDGEFIT_RETURN_IF_ERROR(fit_from(roughs[k], &other));
+    char line[240];
+    std::snprintf(line, sizeof(line),
+                  "base: alternative rough pose %zu: whole model Eq. 9 loss %.1f against %.1f%s", k,
+                  other.loss, best.loss, other.loss < best.loss ? ": taken" : "");
+    say(line);
+    if (other.loss < best.loss) {
+      best = std::move(other);
+      result->base_rough.T_world_base = roughs[k];
     }
   }
-  chain.CheckPinning(result->T_world_base, &records, q);
+  result->T_world_base = best.T_world_base;
+  result->bodies.push_back(Quality(model, base, base_samples, best.base, options));
+  std::vector<double>& q = best.q;
+  const std::vector<JointRecord>& records = best.records;
   const Status resolved = model.ResolveDependentJoints(&q);
   result->q = q;
-  result->timings.chain = Since(stage);
 
   // Quality of every body alone at the final values.
+  WeightedIcpSummary summary;
   const std::vector<Pose> T_world_link = model.ForwardKinematics(q, result->T_world_base);
   for (const JointRecord& record : records) {
     const Body body =

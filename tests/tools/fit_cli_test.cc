@@ -20,11 +20,11 @@ TEST_F(CliTest, FitWritesTheResultContract) {
                 " --truth=" + truth)
                 .exit_code,
             0);
-  const RunResult r = Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
-                          " --out=" + Path("result.json") + " --out_joint_states=" +
-                          Path("j.yaml") + " --out_urdf=" + Path("fitted.urdf") +
-                          " --out_ply=" + Path("model.ply") + " --out_background=" +
-                          Path("background.ptx"));
+  const RunResult r =
+      Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
+          " --out=" + Path("result.json") + " --out_joint_states=" + Path("j.yaml") +
+          " --out_urdf=" + Path("fitted.urdf") + " --out_ply=" + Path("model.ply") +
+          " --out_background=" + Path("background.ptx"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
   EXPECT_EQ(result["kind"], "articulated");
@@ -70,13 +70,14 @@ TEST_F(CliTest, FitTellsAConveyorFromItsModel) {
   // its base's rough pose comes from the arm tips (paper Sec. 6.1).
   const std::string conveyor = std::string(EDGEFIT_SOURCE_DIR) + "/assets/conveyor/conveyor.urdf";
   const std::string scan = Path("conveyor.ptx"), truth = Path("truth.json");
-  ASSERT_EQ(Run("scan --urdf=" + conveyor + " --random_pose --seed=3 --base=0.3,0.2,-70 "
-                "--spacing_mm=6 --out=" + scan + " --truth=" + truth)
+  ASSERT_EQ(Run("scan --urdf=" + conveyor +
+                " --random_pose --seed=3 --base=0.3,0.2,-70 "
+                "--spacing_mm=6 --out=" +
+                scan + " --truth=" + truth)
                 .exit_code,
             0);
-  const RunResult r =
-      Run("fit --urdf=" + conveyor + " --scan=" + scan + " --truth=" + truth + " --out=" +
-          Path("result.json"));
+  const RunResult r = Run("fit --urdf=" + conveyor + " --scan=" + scan + " --truth=" + truth +
+                          " --out=" + Path("result.json"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
   EXPECT_EQ(result["kind"], "conveyance");
@@ -103,9 +104,9 @@ TEST_F(CliTest, FitBadInput) {
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --loss=l3", "l3");
   ExpectBadInput("fit --urdf=" + conveyor + " --scan=" + sample + out + " --kind=crane",
                  "--kind must be auto, articulated or conveyance");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out +
-                     " --background_distance_mm=-1",
-                 "--background_distance_mm");
+  ExpectBadInput(
+      "fit --urdf=" + kModel + " --scan=" + sample + out + " --background_distance_mm=-1",
+      "--background_distance_mm");
   EXPECT_FALSE(fs::exists(Path("result.json")));
 }
 
