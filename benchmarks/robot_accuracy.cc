@@ -44,6 +44,8 @@ DEFINE_int32(random, 20, "Random postures (RandomJointValuesAboveFloor) after th
 DEFINE_string(accessories, "without,with", "Scenes: without and/or with accessories.");
 DEFINE_string(weighting, "edge,uniform", "Fits: edge and/or uniform weights.");
 DEFINE_string(kind, "auto", "auto | articulated | conveyance (edgefit fit --kind).");
+DEFINE_int32(base_alternatives, -1,
+             "RobotFitOptions::base_alternatives (-1: the kind's default, FitOptionsFor).");
 DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICPs: joint_space or pose_penalty (Eq. 10 / 14).");
 DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (edge fits).");
@@ -280,6 +282,7 @@ int Run() {
             ParseJointParameterization(FLAGS_parameterization, &options.joint_icp.parameterization);
         CHECK(status.ok()) << status.message();
         options.subtree_icp.parameterization = options.joint_icp.parameterization;
+        if (FLAGS_base_alternatives >= 0) options.base_alternatives = FLAGS_base_alternatives;
         options.base_icp.visibility = options.joint_icp.visibility =
             options.subtree_icp.visibility = IcpVisibility(FLAGS_icp_visibility);
         RobotFitResult fit;

@@ -4,6 +4,8 @@
 # non-modelled accessories is scanned from 3 scanners (virtual scanner), its
 # edges are detected and scored against the scanner's ground truth, and the
 # robot is fitted to the scan (base pose and every joint), truth against fit.
+# Then the bundled conveyor (paper Sec. 6) the same way: scanned in its
+# `transfer` posture with accessories, fitted with --kind=auto (conveyance).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -46,3 +48,14 @@ echo "   (Eq. 9 sweep + joint-constrained weighted ICP); truth against fit"
   --scan="$out/robot.ptx" --truth="$out/robot_truth.json" --out="$out/result.json" \
   --out_joint_states="$out/joint_states.yaml" --out_urdf="$out/robot_fitted.urdf"
 echo "(result: $out/result.json; joint states: $out/joint_states.yaml; calibrated URDF: $out/robot_fitted.urdf)"
+echo
+echo "== the bundled conveyor (paper Sec. 6): posture transfer, accessories, 3 scanners, 3 mm spacing"
+"$edgefit" scan --urdf=assets/conveyor/conveyor.urdf --posture=assets/conveyor/postures.json:transfer \
+  --base=0.3,-0.4,-25 --accessories --spacing_mm=3 --seed=7 \
+  --out="$out/conveyor.ptx" --truth="$out/conveyor_truth.json"
+echo
+echo "== edgefit fit --kind=auto (conveyance: prismatic joints only): base from the arm tips"
+echo "   (height map, convex tips, symmetry axis), then every prismatic joint; truth against fit"
+"$edgefit" fit --urdf=assets/conveyor/conveyor.urdf --scan="$out/conveyor.ptx" \
+  --truth="$out/conveyor_truth.json" --out="$out/conveyor_result.json"
+echo "(result: $out/conveyor_result.json)"

@@ -14,3 +14,8 @@ target_include_directories(robot_bodies_test PRIVATE ${PROJECT_SOURCE_DIR}/src/p
 edgefit_add_test(conveyance_fit_test SINGLE_PROCESS
   SOURCES pipeline/conveyance_fit_test.cc
   LIBS edgefit::pipeline edgefit::scanner edgefit::model glog::glog)
+# A robot on a linear track (../shared/robots; skips without it): the rail
+# as the base, the carriage a prismatic joint.
+edgefit_add_test(linear_track_fit_test SINGLE_PROCESS
+  SOURCES pipeline/linear_track_fit_test.cc
+  LIBS edgefit::pipeline edgefit::scanner edgefit::model)

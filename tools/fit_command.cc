@@ -1,6 +1,8 @@
-// edgefit fit: fits the kinematic model to the scan (paper Sec. 5) and
-// writes result.json (DESIGN.md contract); optional outputs for the user.
+// edgefit fit: fits the kinematic model to the scan (paper Sec. 5 robots,
+// Sec. 6 conveyance systems) and writes result.json (DESIGN.md contract);
+// optional outputs for the user.
 //   edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json
+//               [--kind=auto|articulated|conveyance]
 //               [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]
 //               [--init=x,y,yaw_deg] [--truth=T.json] [--out_joint_states=J.yaml]
 //               [--out_urdf=U.urdf] [--out_ply=M.ply] [--out_background=B.ptx]
@@ -319,9 +321,10 @@ int RunFit(const Command& command) {
 Command FitCommand() {
   return {
       "fit",
-      "fit the kinematic model to the scan: base pose and every joint (paper Sec. 5)",
+      "fit the kinematic model to the scan: base pose and every joint (paper Sec. 5, 6)",
       "Usage:\n"
       "  edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json\n"
+      "              [--kind=auto|articulated|conveyance]\n"
       "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
       "              [--parameterization=joint_space|pose_penalty] [--init=x,y,yaw_deg]\n"
       "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
@@ -329,7 +332,8 @@ Command FitCommand() {
       "              [--threads=N] [--seed=N]\n"
       "Example:\n"
       "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
-      "    --scan=robot.ptx --truth=robot_truth.json --out=result.json",
+      "    --scan=robot.ptx --truth=robot_truth.json --out=result.json\n"
+      "  edgefit fit --urdf=assets/conveyor/conveyor.urdf --scan=conveyor.ptx --out=result.json",
       {"urdf",
        "attach",
        "scan",

@@ -52,6 +52,9 @@ bool RobotFitOptions::IsValid(std::string* error) const {
       !(resweep_window_rad > 0.0)) {
     return fail("max_resweeps must be >= 0 and the resweep tolerances and window > 0");
   }
+  if (!(slide_elongation > 0.0) || !(slide_step > 0.0)) {
+    return fail("slide_elongation and slide_step must be > 0");
+  }
   if (base_alternatives < 0 || !(base_alternative_loss >= 0.0)) {
     return fail("base_alternatives and base_alternative_loss must be >= 0");
   }
@@ -123,6 +126,29 @@ bool IsDistinctPose(const Pose& a, const Pose& b) {
   const Pose d = a.inverse() * b;
   return Eigen::AngleAxisd(d.linear()).angle() > 5.0 * M_PI / 180.0 ||
          d.translation().norm() > 0.05;
+}
+
+// T_world_base moved along its own axis `axis_base` by up to +-range [m]
+// to the lowest loss: a coarse pass at `step`, then step / 5 around it.
+Pose SlideAlong(const Pose& T_world_base, const Eigen::Vector3d& axis_base, double range,
+                double step, const BasePoseLoss& loss) {
+  const Eigen::Vector3d axis_world = T_world_base.linear() * axis_base;
+  auto moved = [&](double d) {
+    Pose T = T_world_base;
+    T.translation() += d * axis_world;
+    return T;
+  };
+  auto best_of = [&](double from, double to, double by) {
+    const int n = static_cast<int>(std::ceil((to - from) / by));
+    std::vector<double> losses(static_cast<size_t>(n) + 1);
+#pragma omp parallel for schedule(dynamic, 8)
+    for (int k = 0; k <= n; ++k) losses[static_cast<size_t>(k)] = loss(moved(from + k * by));
+    const size_t best =
+        static_cast<size_t>(std::min_element(losses.begin(), losses.end()) - losses.begin());
+    return from + static_cast<double>(best) * by;
+  };
+  const double coarse = best_of(-range, range, step);
+  return moved(best_of(coarse - step, coarse + step, 0.2 * step));
 }
 
 // What the chain pass found for one independent joint.
@@ -624,6 +650,19 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
       result->timings.total = Since(start);
       return Status::Ok();
     }
+    // An elongated base (a linear track's rail) scores about alike anywhere
+    // along its length in the 2D sections: each candidate slides along it.
+    if (result->base_rough_method == RobotFitOptions::BaseRoughMethod::kCrossSections) {
+      const Eigen::Vector3d size = base_mesh.BoundingBox().sizes();
+      const int along = size.x() >= size.y() ? 0 : 1;
+      if (size[along] > options.slide_elongation * std::max(size[1 - along], 1e-9)) {
+        say("base: elongated; each candidate slides along its length (Eq. 9 loss of the base)");
+        for (Pose& candidate : result->base_rough.candidates) {
+          candidate = SlideAlong(candidate, Eigen::Vector3d::Unit(along), 0.5 * size[along],
+                                 options.slide_step, base_loss);
+        }
+      }
+    }
     // Candidates by the base's loss, best first.
     std::vector<std::pair<double, Pose>> by_loss;
     for (const Pose& candidate : result->base_rough.candidates) {
@@ -755,7 +794,7 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
     } else {
       std::snprintf(line, sizeof(line),
                     "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "
-                    "(need %.0f%%), RMS %.2f mm",
+                    "of the scanned surface (need %.0f%%), RMS %.2f mm",
                     b.link.c_str(), 100.0 * b.inlier_share, 1e3 * options.joint_icp.final_gate,
                     100.0 * options.min_inlier_share, 1e3 * b.rms);
     }
