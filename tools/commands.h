@@ -11,6 +11,7 @@ Command InfoCommand();
 Command ScanCommand();
 Command EdgesCommand();
 Command FitCommand();
+Command BatchCommand();
 
 }  // namespace edgefit::tools
 

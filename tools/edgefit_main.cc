@@ -16,6 +16,7 @@ const std::vector<Command>& AllCommands() {
       ScanCommand(),
       EdgesCommand(),
       FitCommand(),
+      BatchCommand(),
   };
   return kCommands;
 }

@@ -1,0 +1,74 @@
+// edgefit batch through the command line: jobs from a manifest, one fit
+// process each; a failed job is reported and the batch goes on; shards split
+// the rows; a bad manifest is bad input (issue 8).
+#include <string>
+
+#include "tools/cli_fixture.h"
+
+namespace {
+
+using edgefit_cli_test::CliTest;
+using edgefit_cli_test::RunResult;
+using edgefit_cli_test::Slurp;
+namespace fs = std::filesystem;
+
+const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
+
+TEST_F(CliTest, BatchRunsEveryJobAndReportsTheFailedOne) {
+  ASSERT_EQ(Run("scan --urdf=" + kModel + " --scanners=2 --out=" + Path("arm.ptx") +
+                " --truth=" + Path("truth.json"))
+                .exit_code,
+            0);
+  // Relative paths are taken from the manifest's folder.
+  const std::string manifest = Write("jobs.csv",
+                                     "name,urdf,scan,out,options\n"
+                                     "arm," +
+                                         kModel +
+                                         ",arm.ptx,arm_result.json,--truth=truth.json\n"
+                                         "# a comment line\n"
+                                         "lost," +
+                                         kModel + ",none.ptx,lost_result.json,\n");
+  const RunResult r = Run("batch --manifest=" + manifest);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;  // one job failed
+  EXPECT_NE(r.out.find("[1/2] arm: ok"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[2/2] lost: FAILED (exit 2)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("none.ptx"), std::string::npos) << r.out;  // the job's error line
+  EXPECT_NE(r.out.find("2 of 2 jobs: 1 done (0 not ok), 1 failed"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(Path("arm_result.json")));
+  EXPECT_NE(Slurp(Path("arm_result.json")).find("\"errors\""), std::string::npos);  // --truth
+  EXPECT_FALSE(fs::exists(Path("lost_result.json")));
+}
+
+TEST_F(CliTest, BatchShardsSplitTheRows) {
+  std::string rows = "name,urdf,scan,out\n";
+  for (int k = 0; k < 5; ++k) {
+    rows +=
+        "job" + std::to_string(k) + "," + kModel + ",missing.ptx,r" + std::to_string(k) + ".json\n";
+  }
+  const std::string manifest = Write("jobs.csv", rows);
+  const RunResult first = Run("batch --manifest=" + manifest + " --shard=0/2");
+  const RunResult second = Run("batch --manifest=" + manifest + " --shard=1/2");
+  for (int k = 0; k < 5; ++k) {
+    const std::string job = "] job" + std::to_string(k) + ":";
+    EXPECT_EQ(first.out.find(job) != std::string::npos, k % 2 == 0) << first.out;
+    EXPECT_EQ(second.out.find(job) != std::string::npos, k % 2 == 1) << second.out;
+  }
+  EXPECT_NE(first.out.find("shard 0/2, 3 of 5 jobs"), std::string::npos) << first.out;
+  EXPECT_NE(second.out.find("shard 1/2, 2 of 5 jobs"), std::string::npos) << second.out;
+}
+
+TEST_F(CliTest, BatchBadManifest) {
+  ExpectBadInput("batch", "--manifest is required");
+  ExpectBadInput("batch --manifest=" + Path("none.csv"), "none.csv");
+  const std::string no_out = Write("a.csv", "urdf,scan\nx.urdf,y.ptx\n");
+  ExpectBadInput("batch --manifest=" + no_out, "a.csv:1: the header lacks the column 'out'");
+  const std::string short_row = Write("b.csv", "urdf,scan,out\nx.urdf,y.ptx\n");
+  ExpectBadInput("batch --manifest=" + short_row, "b.csv:2: 2 fields, the header has 3");
+  const std::string owned = Write("c.csv", "urdf,scan,out,options\nx,y,z,--scan=w\n");
+  ExpectBadInput("batch --manifest=" + owned, "belongs in its own column");
+  const std::string good = Write("d.csv", "urdf,scan,out\nx,y,z\n");
+  ExpectBadInput("batch --manifest=" + good + " --shard=2/2", "--shard=2/2");
+  ExpectBadInput("batch --manifest=" + good + " --shard=one", "--shard must be i/N");
+}
+
+}  // namespace
