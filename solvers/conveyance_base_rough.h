@@ -13,7 +13,8 @@
 //      taken over the corners of its joints' ranges (the arms move).
 //   5. Pairs matched between CAD and scan by width and height; the axis and
 //      the pair midpoints align the base across the axis and in yaw (both
-//      ways round).
+//      ways round). The pairs of every parallel axis take part: clamps
+//      opened unequally shift their pair's axis sideways.
 // Extension: the tips sit on moving links (carriages), so along the axis a
 // matched pair fixes the base only to within its joints' travel. The base
 // position along the axis is searched over the stretch that most matched
