@@ -1,0 +1,60 @@
+#include "edgefit/pipeline/bench_case.h"
+
+#include "edgefit/core/split_mix64.h"
+#include "edgefit/model/joint_values.h"
+#include "edgefit/scanner/truth.h"
+
+namespace edgefit {
+
+BenchCase MakeBenchCase(const std::string& name, uint64_t seed, uint64_t stream,
+                        double base_range) {
+  BenchCase c;
+  c.name = name;
+  c.seed = SplitMix64::StreamSeed(seed, stream);
+  SplitMix64 random(c.seed);
+  const double x = random.Uniform(-base_range, base_range);
+  const double y = random.Uniform(-base_range, base_range);
+  c.T_world_base = PoseFromXyYaw(x, y, random.Uniform(-M_PI, M_PI));
+  return c;
+}
+
+Status NamedPostureCases(const KinematicModel& model, const std::string& postures_file,
+                         uint64_t seed, double base_range, std::vector<BenchCase>* cases) {
+  std::vector<std::string> names;
+  EDGEFIT_RETURN_IF_ERROR(ListPostures(postures_file, &names));
+  for (size_t i = 0; i < names.size(); ++i) {
+    BenchCase c = MakeBenchCase(names[i], seed, i, base_range);
+    c.q = model.ZeroJoints();
+    EDGEFIT_RETURN_IF_ERROR(LoadNamedPosture(postures_file, names[i], model, &c.q));
+    EDGEFIT_RETURN_IF_ERROR(model.ResolveDependentJoints(&c.q));
+    cases->push_back(std::move(c));
+  }
+  return Status::Ok();
+}
+
+Status RunBenchCase(const KinematicModel& model, const BenchCase& bench_case,
+                    AssetScanOptions scan_options, const RobotFitOptions& fit_options,
+                    BenchResult* result) {
+  *result = BenchResult();
+  scan_options.seed = bench_case.seed;
+  VirtualScan scan;
+  EDGEFIT_RETURN_IF_ERROR(
+      ScanAsset(model, bench_case.q, bench_case.T_world_base, scan_options, &scan, nullptr));
+  result->points = scan.scans.TotalValid();
+  RobotFitResult fit;
+  EDGEFIT_RETURN_IF_ERROR(FitRobot(model, scan.scans, fit_options, nullptr, &fit));
+  result->timings = fit.timings;
+  result->ok = fit.ok;
+  result->message = fit.message;
+  EDGEFIT_RETURN_IF_ERROR(CompareWithTruth(model, fit.q, fit.T_world_base,
+                                           NamedJointValues(model, bench_case.q),
+                                           bench_case.T_world_base, &result->errors));
+  for (const JointError& e : result->errors.joints) {
+    if (e.independent && e.error > (e.prismatic ? kFailedPrismatic : kFailedRevolute)) {
+      result->failed = true;
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace edgefit
