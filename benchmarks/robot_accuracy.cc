@@ -32,6 +32,7 @@
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/random_joints.h"
 #include "edgefit/pipeline/asset_kind.h"
+#include "edgefit/pipeline/bench_case.h"
 #include "edgefit/pipeline/fit_errors.h"
 #include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/asset_scan.h"
@@ -65,15 +66,7 @@ namespace edgefit {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-constexpr double kFailRevolute = 0.5 * kDeg;  // issue 6: a failed fit
-constexpr double kFailPrismatic = 0.005;
-
-struct Case {
-  std::string name;
-  std::vector<double> q;
-  Pose T_world_base;
-  uint64_t seed = 0;
-};
+using Case = BenchCase;
 
 struct FitRecord {
   std::string case_name;
@@ -159,28 +152,14 @@ std::string BuriedLink(const KinematicModel& model, const Case& c) {
 // posture in which a link with a mesh is buried (BuriedLink) is redrawn.
 std::vector<Case> MakeCases(const KinematicModel& model) {
   std::vector<Case> cases;
-  auto make_case = [](const std::string& name, uint64_t stream) {
-    Case c;
-    c.name = name;
-    c.seed = SplitMix64::StreamSeed(FLAGS_seed, stream);
-    SplitMix64 rng(c.seed);
-    const double x = rng.Uniform(-FLAGS_base_range_m, FLAGS_base_range_m);
-    const double y = rng.Uniform(-FLAGS_base_range_m, FLAGS_base_range_m);
-    c.T_world_base = PoseFromXyYaw(x, y, rng.Uniform(-M_PI, M_PI));
-    return c;
-  };
-  std::vector<std::string> names;
-  if (!FLAGS_postures.empty()) CHECK(ListPostures(FLAGS_postures, &names).ok()) << FLAGS_postures;
-  for (size_t i = 0; i < names.size(); ++i) {
-    Case c = make_case(names[i], i);
-    c.q = model.ZeroJoints();
-    const Status s = LoadNamedPosture(FLAGS_postures, names[i], model, &c.q);
+  if (!FLAGS_postures.empty()) {
+    const Status s =
+        NamedPostureCases(model, FLAGS_postures, FLAGS_seed, FLAGS_base_range_m, &cases);
     CHECK(s.ok()) << s.message();
-    CHECK(model.ResolveDependentJoints(&c.q).ok()) << names[i];
-    cases.push_back(c);
   }
   for (int i = 0; i < FLAGS_random; ++i) {
-    Case c = make_case("random_" + std::to_string(i), 1000 + static_cast<uint64_t>(i));
+    Case c = MakeBenchCase("random_" + std::to_string(i), FLAGS_seed,
+                           1000 + static_cast<uint64_t>(i), FLAGS_base_range_m);
     for (uint64_t draw = 0;; ++draw) {
       CHECK(RandomJointValuesAboveFloor(model, c.T_world_base, 0.0, Mix64(c.seed + draw), &c.q))
           << c.name;
@@ -304,7 +283,7 @@ int Run() {
         std::string worst_name[2];
         for (const JointError& e : record.errors.joints) {
           if (!e.independent) continue;
-          record.failed |= e.error > (e.prismatic ? kFailPrismatic : kFailRevolute);
+          record.failed |= e.error > (e.prismatic ? kFailedPrismatic : kFailedRevolute);
           const double deg_or_mm = e.prismatic ? 1e3 * e.error : e.error / kDeg;
           if (deg_or_mm > worst[e.prismatic]) {
             worst[e.prismatic] = deg_or_mm;

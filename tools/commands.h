@@ -12,6 +12,7 @@ Command ScanCommand();
 Command EdgesCommand();
 Command FitCommand();
 Command BatchCommand();
+Command BenchCommand();
 
 }  // namespace edgefit::tools
 

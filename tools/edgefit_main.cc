@@ -17,6 +17,7 @@ const std::vector<Command>& AllCommands() {
       EdgesCommand(),
       FitCommand(),
       BatchCommand(),
+      BenchCommand(),
   };
   return kCommands;
 }

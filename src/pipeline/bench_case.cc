@@ -32,18 +32,20 @@ Status NamedPostureCases(const KinematicModel& model, const std::string& posture
   return Status::Ok();
 }
 
-Status RunBenchCase(const KinematicModel& model, const BenchCase& bench_case,
-                    AssetScanOptions scan_options, const RobotFitOptions& fit_options,
-                    BenchResult* result) {
-  *result = BenchResult();
+Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
+                     AssetScanOptions scan_options, VirtualScan* scan) {
   scan_options.seed = bench_case.seed;
-  VirtualScan scan;
-  EDGEFIT_RETURN_IF_ERROR(
-      ScanAsset(model, bench_case.q, bench_case.T_world_base, scan_options, &scan, nullptr));
-  result->points = scan.scans.TotalValid();
+  return ScanAsset(model, bench_case.q, bench_case.T_world_base, scan_options, scan, nullptr);
+}
+
+Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
+                    const RobotFitOptions& fit_options, BenchResult* result) {
+  *result = BenchResult();
+  result->points = scans.TotalValid();
   RobotFitResult fit;
-  EDGEFIT_RETURN_IF_ERROR(FitRobot(model, scan.scans, fit_options, nullptr, &fit));
+  EDGEFIT_RETURN_IF_ERROR(FitRobot(model, scans, fit_options, nullptr, &fit));
   result->timings = fit.timings;
+  result->bodies = fit.bodies;
   result->ok = fit.ok;
   result->message = fit.message;
   EDGEFIT_RETURN_IF_ERROR(CompareWithTruth(model, fit.q, fit.T_world_base,

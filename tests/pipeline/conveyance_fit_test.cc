@@ -18,6 +18,7 @@
 #include "edgefit/model/random_joints.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/pipeline/asset_kind.h"
+#include "edgefit/pipeline/bench_case.h"
 #include "edgefit/pipeline/fit_errors.h"
 #include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/asset_scan.h"
@@ -100,10 +101,9 @@ TEST(ConveyanceFitTest, RecoversBaseAndPrismaticJointsFromTheArmTips) {
 // through the whole chain both ways round, the model picks the right one.
 TEST(ConveyanceFitTest, AFrameTurnedHalfATurnIsToldByItsLinks) {
   const ConveyorScene& s = GetScene();
-  const uint64_t seed = SplitMix64::StreamSeed(1, 1002);
-  SplitMix64 random(seed);
-  const double x = random.Uniform(-1.0, 1.0), y = random.Uniform(-1.0, 1.0);
-  const Pose T_world_base = PoseFromXyYaw(x, y, random.Uniform(-M_PI, M_PI));
+  const BenchCase c = MakeBenchCase("random_2", 1, 1002, 1.0);  // as robot_accuracy
+  const uint64_t seed = c.seed;
+  const Pose& T_world_base = c.T_world_base;
   std::vector<double> q;
   ASSERT_TRUE(RandomJointValuesAboveFloor(s.model, T_world_base, 0.0, Mix64(seed), &q));
   AssetScanOptions scan_options;

@@ -17,6 +17,7 @@
 #include "edgefit/model/composition.h"
 #include "edgefit/model/random_joints.h"
 #include "edgefit/pipeline/asset_kind.h"
+#include "edgefit/pipeline/bench_case.h"
 #include "edgefit/pipeline/fit_errors.h"
 #include "edgefit/pipeline/robot_fit.h"
 #include "edgefit/scanner/asset_scan.h"
@@ -42,10 +43,9 @@ TEST(LinearTrackFitTest, TheRailSlidesToItsPlace) {
   ASSERT_TRUE(ChooseAssetKind("auto", model, &kind).ok());
   EXPECT_EQ(kind, AssetKind::kArticulated);  // revolute joints: not a conveyor
 
-  const uint64_t seed = SplitMix64::StreamSeed(1, 1001);  // random_1
-  SplitMix64 random(seed);
-  const double x = random.Uniform(-1.0, 1.0), y = random.Uniform(-1.0, 1.0);
-  const Pose T_world_base = PoseFromXyYaw(x, y, random.Uniform(-M_PI, M_PI));
+  const BenchCase c = MakeBenchCase("random_1", 1, 1001, 1.0);  // as robot_accuracy
+  const uint64_t seed = c.seed;
+  const Pose& T_world_base = c.T_world_base;
   std::vector<double> q;
   ASSERT_TRUE(RandomJointValuesAboveFloor(model, T_world_base, 0.0, Mix64(seed), &q));
   AssetScanOptions scan_options;

@@ -19,7 +19,7 @@
 namespace edgefit {
 
 struct BenchCase {
-  std::string name;  // the posture's ("load", "random_3")
+  std::string name;       // the posture's ("load", "random_3")
   std::vector<double> q;  // every joint, model order
   Pose T_world_base = Pose::Identity();
   uint64_t seed = 0;  // the scene's (AssetScanOptions::seed)
@@ -27,8 +27,7 @@ struct BenchCase {
 
 // Case i draws its base pose and scene seed from stream `stream` of `seed`:
 // x, y uniform in [-base_range, base_range] [m], yaw uniform.
-BenchCase MakeBenchCase(const std::string& name, uint64_t seed, uint64_t stream,
-                        double base_range);
+BenchCase MakeBenchCase(const std::string& name, uint64_t seed, uint64_t stream, double base_range);
 
 // Every named posture of a postures file (assets/*/postures.json), posture
 // i on stream i. Fails on a file that does not load or a posture that does
@@ -45,16 +44,20 @@ struct BenchResult {
   size_t points = 0;  // valid scan points
   FitErrors errors;
   RobotFitTimings timings;
+  std::vector<BodyQuality> bodies;
   bool ok = false;  // the fit's own verdict (RobotFitResult::ok)
   std::string message;
   bool failed = false;  // an independent joint beyond the bounds above
 };
 
-// Scans the case (ScanAsset with scan_options, its seed replaced by the
-// case's) and fits it with fit_options.
-Status RunBenchCase(const KinematicModel& model, const BenchCase& bench_case,
-                    AssetScanOptions scan_options, const RobotFitOptions& fit_options,
-                    BenchResult* result);
+// The case's scene (ScanAsset with scan_options, its seed replaced by the
+// case's): scan it once, fit it with several options.
+Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
+                     AssetScanOptions scan_options, VirtualScan* scan);
+
+// Fits the scan of the case with fit_options and scores it.
+Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
+                    const RobotFitOptions& fit_options, BenchResult* result);
 
 }  // namespace edgefit
 

@@ -1,0 +1,45 @@
+// edgefit bench through the command line: the paper's tables for a small
+// selection (one conveyor posture, coarse scan), CSV and JSON outputs, bad
+// flags (issue 8).
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tools/cli_fixture.h"
+
+namespace {
+
+using edgefit_cli_test::CliTest;
+using edgefit_cli_test::RunResult;
+using edgefit_cli_test::Slurp;
+
+const std::string kAssets = std::string(EDGEFIT_SOURCE_DIR) + "/assets/";
+
+TEST_F(CliTest, BenchPrintsThePapersTables) {
+  const RunResult r = Run("bench --assets=conveyor --conveyor_urdf=" + kAssets +
+                          "conveyor/conveyor.urdf --conveyor_postures=" + kAssets +
+                          "conveyor/postures.json --only=load --scenes=without "
+                          "--weightings=edge --spacing_mm=8 --out_csv=" +
+                          Path("bench.csv") + " --out_json=" + Path("bench.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("## Table 2: translation error per joint [mm]"), std::string::npos);
+  EXPECT_NE(r.out.find("| load | without | edge |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("carriage_1_joint"), std::string::npos) << r.out;
+  const std::string csv = Slurp(Path("bench.csv"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7) << csv;  // header + 6 joints
+  const nlohmann::json json = nlohmann::json::parse(Slurp(Path("bench.json")));
+  ASSERT_EQ(json.size(), 1u);
+  EXPECT_EQ(json[0]["posture"], "load");
+  EXPECT_FALSE(json[0]["failed"].get<bool>()) << json.dump();
+  for (const auto& [joint, error] : json[0]["joint_errors"].items()) {
+    EXPECT_LT(error.get<double>(), 0.002) << joint;  // 8 mm spacing: within 2 mm
+  }
+}
+
+TEST_F(CliTest, BenchBadInput) {
+  ExpectBadInput("bench --assets=crane", "--assets");
+  ExpectBadInput("bench --scenes=maybe", "--scenes");
+  ExpectBadInput("bench --weightings=heavy", "--weightings");
+  ExpectBadInput("bench --assets=conveyor --conveyor_urdf=" + Path("none.urdf"), "none.urdf");
+}
+
+}  // namespace
