@@ -42,7 +42,7 @@ DEFINE_string(weightings, "uniform,edge", "Bench: fits with uniform and/or edge 
 DEFINE_string(only, "", "Bench: only these postures (names, comma-separated).");
 DEFINE_double(base_range_m, 1.0, "Bench: random base x, y in [-r, r] [m]; yaw uniform.");
 DEFINE_string(out_csv, "", "Bench: optional CSV, one line per fitted joint.");
-DEFINE_string(out_json, "", "Bench: optional JSON of every run.");
+DECLARE_string(out_json);  // edges_command.cc; bench: the JSON of every run
 DECLARE_double(spacing_mm);
 DECLARE_double(noise_mm);
 DECLARE_int32(scanners);
