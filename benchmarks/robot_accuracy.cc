@@ -264,26 +264,24 @@ int Run() {
         if (FLAGS_base_alternatives >= 0) options.base_alternatives = FLAGS_base_alternatives;
         options.base_icp.visibility = options.joint_icp.visibility =
             options.subtree_icp.visibility = IcpVisibility(FLAGS_icp_visibility);
-        RobotFitResult fit;
         ProgressFn progress;
         if (FLAGS_progress)
           progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
-        status = FitRobot(model, scan.scans, options, progress, &fit);
+        BenchResult fit;
+        status = FitBenchCase(model, c, scan.scans, options, &fit, progress);
         CHECK(status.ok()) << c.name << ": " << status.message();
         FitRecord record;
         record.case_name = c.name;
         record.timings = fit.timings;
-        record.points = scan.scans.TotalValid();
+        record.points = fit.points;
         record.quality_ok = fit.ok;
         record.message = fit.message;
-        status = CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, c.q),
-                                  c.T_world_base, &record.errors);
-        CHECK(status.ok()) << status.message();
+        record.errors = fit.errors;
+        record.failed = fit.failed;
         double worst[2] = {0.0, 0.0};  // revolute [deg], prismatic [mm]
         std::string worst_name[2];
         for (const JointError& e : record.errors.joints) {
           if (!e.independent) continue;
-          record.failed |= e.error > (e.prismatic ? kFailedPrismatic : kFailedRevolute);
           const double deg_or_mm = e.prismatic ? 1e3 * e.error : e.error / kDeg;
           if (deg_or_mm > worst[e.prismatic]) {
             worst[e.prismatic] = deg_or_mm;

@@ -39,11 +39,12 @@ Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
 }
 
 Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
-                    const RobotFitOptions& fit_options, BenchResult* result) {
+                    const RobotFitOptions& fit_options, BenchResult* result,
+                    const ProgressFn& progress) {
   *result = BenchResult();
   result->points = scans.TotalValid();
   RobotFitResult fit;
-  EDGEFIT_RETURN_IF_ERROR(FitRobot(model, scans, fit_options, nullptr, &fit));
+  EDGEFIT_RETURN_IF_ERROR(FitRobot(model, scans, fit_options, progress, &fit));
   result->timings = fit.timings;
   result->bodies = fit.bodies;
   result->ok = fit.ok;

@@ -57,7 +57,8 @@ Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
 
 // Fits the scan of the case with fit_options and scores it.
 Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
-                    const RobotFitOptions& fit_options, BenchResult* result);
+                    const RobotFitOptions& fit_options, BenchResult* result,
+                    const ProgressFn& progress = nullptr);
 
 }  // namespace edgefit
 
