@@ -49,6 +49,9 @@ DEFINE_int32(base_alternatives, -1,
              "RobotFitOptions::base_alternatives (-1: the kind's default, FitOptionsFor).");
 DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICPs: joint_space or pose_penalty (Eq. 10 / 14).");
+DEFINE_string(refine_chain, "off",
+              "Fits: without (off) and/or with (on) the whole-chain refinement (--refine_chain).");
+DEFINE_int32(max_chain_samples, -1, "RobotFitOptions::max_chain_samples (-1: the default).");
 DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (edge fits).");
 DEFINE_string(icp_visibility, "seen",
               "Which CAD samples the ICPs use (WeightedIcpOptions::visibility): seen (facing a "
@@ -175,7 +178,7 @@ std::vector<Case> MakeCases(const KinematicModel& model) {
 }
 
 void PrintSummary(const std::string& config, const std::vector<FitRecord>& records) {
-  std::vector<double> revolute, prismatic, base_t, base_r, total;
+  std::vector<double> revolute, prismatic, base_t, base_r, tip, total;
   std::map<std::string, std::vector<double>> per_joint;
   std::vector<std::string> joint_order;
   int failed = 0, not_ok = 0, confident_wrong = 0;
@@ -187,6 +190,7 @@ void PrintSummary(const std::string& config, const std::vector<FitRecord>& recor
       per_joint[e.name].push_back(e.prismatic ? 1e3 * e.error : e.error / kDeg);
     }
     base_t.push_back(1e3 * r.errors.base_translation);
+    tip.push_back(1e3 * r.errors.tool_tip);
     base_r.push_back(r.errors.base_rotation / kDeg);
     total.push_back(r.timings.total);
     failed += r.failed;
@@ -196,18 +200,19 @@ void PrintSummary(const std::string& config, const std::vector<FitRecord>& recor
   std::printf("\n### %s: %zu fits\n\n", config.c_str(), records.size());
   std::printf(
       "| revolute mean | p95 | max | prismatic mean | p95 | max | base mean | base max | "
-      "base rot mean | max | failed | not ok | failed yet ok | mean time |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "base rot mean | max | tool tip mean | p95 | failed | not ok | failed yet ok | mean time "
+      "|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::printf(
       "| %.4f° | %.4f° | %.4f° | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.4f° | %.4f° | "
-      "%d | %d | %d | %.1f s |\n",
+      "%.3f mm | %.3f mm | %d | %d | %d | %.1f s |\n",
       Mean(revolute), Percentile(revolute, 0.95),
       revolute.empty() ? 0.0 : *std::max_element(revolute.begin(), revolute.end()), Mean(prismatic),
       Percentile(prismatic, 0.95),
       prismatic.empty() ? 0.0 : *std::max_element(prismatic.begin(), prismatic.end()), Mean(base_t),
       *std::max_element(base_t.begin(), base_t.end()), Mean(base_r),
-      *std::max_element(base_r.begin(), base_r.end()), failed, not_ok, confident_wrong,
-      Mean(total));
+      *std::max_element(base_r.begin(), base_r.end()), Mean(tip), Percentile(tip, 0.95), failed,
+      not_ok, confident_wrong, Mean(total));
   std::printf("\n| joint | mean | p95 | max |\n|---|---|---|---|\n");
   for (const std::string& name : joint_order) {
     const std::vector<double>& v = per_joint[name];
@@ -237,6 +242,14 @@ int Run() {
     CHECK(csv) << FLAGS_csv;
     csv << "accessories,weighting,case,joint,prismatic,truth,fit,error,quality_ok,total_s\n";
   }
+  std::vector<std::pair<std::string, bool>> configs;  // weighting, refine_chain
+  for (const std::string& weighting : Split(FLAGS_weighting)) {
+    CHECK(weighting == "edge" || weighting == "uniform") << weighting;
+    for (const std::string& refine : Split(FLAGS_refine_chain)) {
+      CHECK(refine == "on" || refine == "off") << refine;
+      configs.emplace_back(weighting, refine == "on");
+    }
+  }
   for (const std::string& accessories : Split(FLAGS_accessories)) {
     CHECK(accessories == "with" || accessories == "without") << accessories;
     std::map<std::string, std::vector<FitRecord>> records;  // by weighting
@@ -252,9 +265,11 @@ int Run() {
       status = ScanAsset(model, c.q, c.T_world_base, CaseScanOptions(c, accessories == "with"),
                          &scan, nullptr);
       CHECK(status.ok()) << status.message();
-      for (const std::string& weighting : Split(FLAGS_weighting)) {
-        CHECK(weighting == "edge" || weighting == "uniform") << weighting;
+      for (const auto& [weighting, refine] : configs) {
+        const std::string config = refine ? weighting + ", refine_chain" : weighting;
         RobotFitOptions options = FitOptionsFor(kind);
+        options.refine_chain = refine;
+        if (FLAGS_max_chain_samples > 0) options.max_chain_samples = FLAGS_max_chain_samples;
         options.uniform_weights = weighting == "uniform";
         options.edges.w_high = FLAGS_w_high;
         status =
@@ -288,7 +303,7 @@ int Run() {
             worst_name[e.prismatic] = e.name;
           }
           if (csv) {
-            csv << accessories << ',' << weighting << ',' << c.name << ',' << e.name << ','
+            csv << accessories << ',' << config << ',' << c.name << ',' << e.name << ','
                 << e.prismatic << ',' << e.truth << ',' << e.fit << ',' << e.error << ',' << fit.ok
                 << ',' << fit.timings.total << '\n';
           }
@@ -317,13 +332,13 @@ int Run() {
         std::printf(
             "| %s | %s | %.2f M | %s%s | %.3f mm / %.4f° | %s | %s | %.1f s (%.1f, "
             "%.1f+%.1f, %.1f) |\n",
-            c.name.c_str(), weighting.c_str(), 1e-6 * static_cast<double>(record.points),
-            worst_text, record.failed ? " FAILED" : "", 1e3 * record.errors.base_translation,
+            c.name.c_str(), config.c_str(), 1e-6 * static_cast<double>(record.points), worst_text,
+            record.failed ? " FAILED" : "", 1e3 * record.errors.base_translation,
             record.errors.base_rotation / kDeg, fit.ok ? "ok" : ("not ok: " + fit.message).c_str(),
             weakest_text, fit.timings.total, fit.timings.edges, fit.timings.base_rough,
             fit.timings.base_precise, fit.timings.chain);
         std::fflush(stdout);
-        records[weighting].push_back(record);
+        records[config].push_back(record);
       }
     }
     for (const auto& [weighting, list] : records) {

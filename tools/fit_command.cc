@@ -42,6 +42,9 @@ DEFINE_double(lambda, 1.0,
 DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICP: joint_space (1 parameter) or pose_penalty "
               "(the paper's 6-DoF pose + Eq. (10) penalties, then projection).");
+DEFINE_bool(refine_chain, false,
+            "After the sequential fit, refine the base pose and every joint together in one "
+            "Ceres problem (solvers/chain_refinement.h).");
 DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
@@ -79,6 +82,9 @@ Status OptionsFromFlags(RobotFitOptions* options) {
   EDGEFIT_RETURN_IF_ERROR(
       ParseJointParameterization(FLAGS_parameterization, &options->joint_icp.parameterization));
   options->subtree_icp.parameterization = options->joint_icp.parameterization;
+  options->refine_chain = FLAGS_refine_chain;
+  options->chain_refinement.icp.loss = FLAGS_loss;
+  options->chain_refinement.icp.loss_scale = FLAGS_loss_scale_mm * 1e-3;
   if (!(FLAGS_background_distance_mm > 0.0))
     return Status::Error("--background_distance_mm must be > 0");
   if (!FLAGS_init.empty()) {
@@ -176,6 +182,21 @@ int RunFit(const Command& command) {
   for (size_t j = 0; j < model.joints().size(); ++j) {
     if (model.joints()[j].IsMoving()) joints[model.joints()[j].name] = fit.q[j];
   }
+  // Standard deviations from the covariance (solvers/chain_refinement.h:
+  // lower bounds), null where not determined.
+  const ChainRefinementSummary& chain = fit.chain_refinement;
+  auto number_or_null = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  json joint_std = json::object();
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    if (model.joints()[j].IsIndependent()) {
+      joint_std[model.joints()[j].name] = number_or_null(chain.joint_std[j]);
+    }
+  }
+  json base_std = {{"rotation_rad", json::array()}, {"xyz_m", json::array()}};
+  for (int i = 0; i < 3; ++i) {
+    base_std["rotation_rad"].push_back(number_or_null(chain.base_rotation_std[i]));
+    base_std["xyz_m"].push_back(number_or_null(chain.base_translation_std[i]));
+  }
   json per_link = json::object();
   for (const BodyQuality& b : fit.bodies) {
     per_link[b.link] = {{"joint", b.joint},
@@ -199,24 +220,36 @@ int RunFit(const Command& command) {
                    {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
                    {"T_world_base", PoseRows(fit.T_world_base)}}},
                  {"joints", joints},
+                 {"joint_std", joint_std},
+                 {"base_std", base_std},
                  {"timing_s",
                   {{"load", load_seconds},
                    {"edges", fit.timings.edges},
                    {"base_rough", fit.timings.base_rough},
                    {"base_precise", fit.timings.base_precise},
                    {"chain", fit.timings.chain},
+                   {"refine", fit.timings.refine},
                    {"total", 0.0}}},
                  {"quality",
                   {{"per_link", per_link},
                    {"ok", fit.ok},
                    {"message", fit.message},
-                   {"base_rough", BaseRoughJson(fit)}}},
+                   {"base_rough", BaseRoughJson(fit)},
+                   {"chain_refinement",
+                    {{"refined", FLAGS_refine_chain},
+                     {"iterations", chain.iterations},
+                     {"stop_reason", IcpStopReasonName(chain.stop_reason)},
+                     {"max_displacement_m", chain.max_displacement},
+                     {"residual_blocks", chain.residual_blocks},
+                     {"sigma_m", chain.sigma},
+                     {"covariance_ok", chain.covariance_ok}}}}},
                  {"options",
                   {{"weighting", FLAGS_weighting},
                    {"w_high", FLAGS_w_high},
                    {"loss", FLAGS_loss},
                    {"lambda", FLAGS_lambda},
                    {"parameterization", FLAGS_parameterization},
+                   {"refine_chain", FLAGS_refine_chain},
                    {"seed", FLAGS_seed}}},
                  {"threads", omp_get_max_threads()}};
   if (!FLAGS_truth.empty()) {
@@ -224,7 +257,9 @@ int RunFit(const Command& command) {
     for (const JointError& j : errors.joints) e[j.name] = j.error;
     result["errors"] = {{"joints", e},
                         {"base_translation_m", errors.base_translation},
-                        {"base_rotation_rad", errors.base_rotation}};
+                        {"base_rotation_rad", errors.base_rotation},
+                        {"tool_tip_link", errors.tool_tip_link},
+                        {"tool_tip_m", errors.tool_tip}};
   }
 
   // Outputs: each atomic; a later failure removes the earlier ones.
@@ -289,15 +324,19 @@ int RunFit(const Command& command) {
     for (size_t j = 0; j < model.joints().size(); ++j) {
       const Joint& joint = model.joints()[j];
       if (!joint.IsMoving()) continue;
-      if (joint.type == JointType::kPrismatic) {
-        std::printf("  %-24s %+10.3f mm\n", joint.name.c_str(), fit.q[j] * 1e3);
-      } else {
-        std::printf("  %-24s %+10.4f deg\n", joint.name.c_str(), fit.q[j] * 180.0 / M_PI);
+      const bool prismatic = joint.type == JointType::kPrismatic;
+      const double scale = prismatic ? 1e3 : 180.0 / M_PI;
+      char spread[48] = "";
+      if (std::isfinite(chain.joint_std[j])) {
+        std::snprintf(spread, sizeof(spread), "  (std %.4f)", chain.joint_std[j] * scale);
       }
+      std::printf("  %-24s %+10.4f %s%s\n", joint.name.c_str(), fit.q[j] * scale,
+                  prismatic ? "mm " : "deg", spread);
     }
   } else {
-    std::printf("base error: %.3f mm, %.4f deg\n", errors.base_translation * 1e3,
-                errors.base_rotation * 180.0 / M_PI);
+    std::printf("base error: %.3f mm, %.4f deg; tool tip (%s) error: %.3f mm\n",
+                errors.base_translation * 1e3, errors.base_rotation * 180.0 / M_PI,
+                errors.tool_tip_link.c_str(), errors.tool_tip * 1e3);
     std::printf("  %-24s %12s %12s %10s\n", "joint", "truth", "fit", "error");
     for (const JointError& j : errors.joints) {
       const double scale = j.prismatic ? 1e3 : 180.0 / M_PI;
@@ -310,9 +349,9 @@ int RunFit(const Command& command) {
               fit.message.c_str());
   std::printf(
       "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
-      "total %.2f s (load %.2f s)\n",
-      fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain, total,
-      load_seconds);
+      "%s %.2f s, total %.2f s (load %.2f s)\n",
+      fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain,
+      FLAGS_refine_chain ? "refine" : "covariance", fit.timings.refine, total, load_seconds);
   return kExitOk;
 }
 
@@ -326,7 +365,8 @@ Command FitCommand() {
       "  edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json\n"
       "              [--kind=auto|articulated|conveyance]\n"
       "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
-      "              [--parameterization=joint_space|pose_penalty] [--init=x,y,yaw_deg]\n"
+      "              [--parameterization=joint_space|pose_penalty] [--refine_chain]\n"
+      "              [--init=x,y,yaw_deg]\n"
       "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
       "              [--out_ply=M.ply] [--out_background=B.ptx] [--background_distance_mm=8]\n"
       "              [--threads=N] [--seed=N]\n"
@@ -345,6 +385,7 @@ Command FitCommand() {
        "loss_scale_mm",
        "lambda",
        "parameterization",
+       "refine_chain",
        "init",
        "truth",
        "out_joint_states",

@@ -58,11 +58,12 @@ bool RobotFitOptions::IsValid(std::string* error) const {
   if (base_alternatives < 0 || !(base_alternative_loss >= 0.0)) {
     return fail("base_alternatives and base_alternative_loss must be >= 0");
   }
-  if (max_icp_samples < 100 || max_sweep_samples < 100 || max_subtree_icp_samples < 100)
+  if (max_icp_samples < 100 || max_sweep_samples < 100 || max_subtree_icp_samples < 100 ||
+      max_chain_samples < 100)
     return fail("sample budgets must be >= 100");
   if (!base_rough.IsValid(error) || !conveyance_base_rough.IsValid(error) ||
       !base_icp.IsValid(error) || !sweep.IsValid(error) || !joint_icp.IsValid(error) ||
-      !subtree_icp.IsValid(error)) {
+      !subtree_icp.IsValid(error) || !chain_refinement.IsValid(error)) {
     return false;
   }
   if (!(min_inlier_share >= 0.0 && min_inlier_share <= 1.0)) {
@@ -752,6 +753,40 @@ Status FitRobot(const KinematicModel& model, const ScanSet& scans, const RobotFi
   const std::vector<JointRecord>& records = best.records;
   const Status resolved = model.ResolveDependentJoints(&q);
   result->q = q;
+
+  // The whole-chain refinement (or the covariance alone) at the final values.
+  stage = std::chrono::steady_clock::now();
+  if (options.refine_chain) say("chain: whole-chain refinement (base and every joint at once)");
+  std::vector<SurfaceSamples> chain_samples(model.links().size());
+  std::vector<bool> point_to_point(model.links().size(), false);
+  for (size_t j = 0; j <= model.joints().size(); ++j) {
+    const bool root = j == model.joints().size();
+    if (!root && !model.joints()[j].IsMoving()) continue;
+    const Body body =
+        root ? base : MakeBody(model, model.joints()[j].child_link, static_cast<int>(j));
+    SurfaceSamples& samples = chain_samples[static_cast<size_t>(body.link)];
+    AppendBodySamples(body, icp_samples, Pose::Identity(), &samples);
+    ThinSamples(options.max_chain_samples, &samples);
+    point_to_point[static_cast<size_t>(body.link)] =
+        !root && model.joints()[j].type == JointType::kPrismatic;
+  }
+  ChainRefinementOptions chain_options = options.chain_refinement;
+  chain_options.refine = options.refine_chain;
+  chain_options.icp.uniform_weights = options.uniform_weights;
+  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &search, chain_samples, point_to_point,
+                                      chain_options, &result->T_world_base, &result->q,
+                                      &result->chain_refinement));
+  q = result->q;
+  result->timings.refine = Since(stage);
+  if (options.refine_chain) {
+    char line[200];
+    std::snprintf(line, sizeof(line),
+                  "chain: refined in %d iterations (%s), samples moved up to %.3f mm, %.2f s",
+                  result->chain_refinement.iterations,
+                  IcpStopReasonName(result->chain_refinement.stop_reason),
+                  1e3 * result->chain_refinement.max_displacement, result->timings.refine);
+    say(line);
+  }
 
   // Quality of every body alone at the final values.
   WeightedIcpSummary summary;

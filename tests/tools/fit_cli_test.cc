@@ -24,7 +24,7 @@ TEST_F(CliTest, FitWritesTheResultContract) {
       Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
           " --out=" + Path("result.json") + " --out_joint_states=" + Path("j.yaml") +
           " --out_urdf=" + Path("fitted.urdf") + " --out_ply=" + Path("model.ply") +
-          " --out_background=" + Path("background.ptx"));
+          " --out_background=" + Path("background.ptx") + " --refine_chain");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
   EXPECT_EQ(result["kind"], "articulated");
@@ -35,7 +35,8 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   for (const char* joint : {"joint_1", "joint_2", "cylinder_joint", "piston_joint", "rod_joint"}) {
     EXPECT_TRUE(result["joints"].contains(joint)) << joint;
   }
-  for (const char* stage : {"load", "edges", "base_rough", "base_precise", "chain", "total"}) {
+  for (const char* stage :
+       {"load", "edges", "base_rough", "base_precise", "chain", "refine", "total"}) {
     EXPECT_TRUE(result["timing_s"].contains(stage)) << stage;
   }
   EXPECT_TRUE(result["quality"]["ok"].get<bool>()) << result["quality"].dump();
@@ -44,6 +45,20 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   EXPECT_LT(result["errors"]["joints"]["joint_1"].get<double>(), 0.1 * M_PI / 180.0);
   EXPECT_LT(result["errors"]["joints"]["joint_2"].get<double>(), 0.1 * M_PI / 180.0);
   EXPECT_LT(result["errors"]["base_translation_m"].get<double>(), 0.001);
+  EXPECT_LT(result["errors"]["tool_tip_m"].get<double>(), 0.002);
+  // --refine_chain ran; the covariance gives every independent joint a
+  // standard deviation (dependent ones follow theirs and have none).
+  const nlohmann::json& chain = result["quality"]["chain_refinement"];
+  EXPECT_TRUE(chain["refined"].get<bool>());
+  EXPECT_GE(chain["iterations"].get<int>(), 1);
+  EXPECT_TRUE(chain["covariance_ok"].get<bool>()) << chain.dump();
+  for (const char* joint : {"joint_1", "joint_2"}) {
+    ASSERT_TRUE(result["joint_std"][joint].is_number()) << result["joint_std"].dump();
+    EXPECT_GT(result["joint_std"][joint].get<double>(), 0.0);
+    EXPECT_LT(result["joint_std"][joint].get<double>(), 0.1 * M_PI / 180.0);
+  }
+  EXPECT_FALSE(result["joint_std"].contains("cylinder_joint"));
+  EXPECT_EQ(result["base_std"]["xyz_m"].size(), 3u);
   EXPECT_NE(Slurp(Path("j.yaml")).find("name: [joint_1, joint_2"), std::string::npos);
   const std::string urdf = Slurp(Path("fitted.urdf"));
   EXPECT_NE(urdf.find("<link name=\"world\"/>"), std::string::npos);

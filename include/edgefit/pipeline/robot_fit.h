@@ -29,6 +29,7 @@
 #include "edgefit/model/kinematic_model.h"
 #include "edgefit/scan/organized_scan.h"
 #include "solvers/base_rough.h"
+#include "solvers/chain_refinement.h"
 #include "solvers/conveyance_base_rough.h"
 #include "solvers/joint_sweep.h"
 #include "solvers/weighted_icp.h"
@@ -85,6 +86,15 @@ struct RobotFitOptions {
   // first, with its whole subtree (everything it carries) as the ICP source.
   bool refine_subtrees = true;
   WeightedIcpOptions subtree_icp = DefaultSubtreeIcp();
+  // --refine_chain (extension): after the sequential fit, one Ceres problem
+  // over the base pose and every joint together (solvers/chain_refinement.h).
+  // Off by default: BENCHMARK.md ("Whole-chain refinement") measures it.
+  // The covariance of the joints is computed either way (chain_refinement.
+  // covariance) at the final estimate, with at most max_chain_samples per
+  // body.
+  bool refine_chain = false;
+  ChainRefinementOptions chain_refinement;
+  int max_chain_samples = 30000;
   // --weighting=uniform: w_edge = 1 in every stage.
   bool uniform_weights = false;
   // A revolute body is rotationally symmetric about its axis (Sec. 5.2.1)
@@ -176,7 +186,9 @@ struct BodyQuality {
 };
 
 struct RobotFitTimings {
-  double edges = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0, total = 0.0;  // [s]
+  // refine: the whole-chain refinement (or the covariance alone) [s]
+  double edges = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0, refine = 0.0,
+         total = 0.0;  // [s]
 };
 
 struct RobotFitResult {
@@ -189,6 +201,9 @@ struct RobotFitResult {
   BaseRoughResult base_rough;
   ConveyanceBaseRoughResult arm_tips;  // kArmTips
   std::vector<BodyQuality> bodies;     // base first, then joints in fit order
+  // The whole-chain refinement (refine_chain) and the covariance: joint_std
+  // per joint [rad] or [m], NaN for dependent joints or when not computed.
+  ChainRefinementSummary chain_refinement;
   RobotFitTimings timings;
   bool ok = false;
   std::string message;  // why not ok
