@@ -1,20 +1,25 @@
-// edgefit bench: the paper's evaluation (Sec. 7.3-7.4) in one command. The
-// bundled robot (with its weld gun) and conveyor, each in its named
-// postures, scanned without and with accessories and fitted with uniform and
-// edge weights: Table 1 (rotation error per joint, degrees) and Table 2
-// (translation error per joint, mm), then base errors and the time per
-// stage, as Markdown on stdout; optionally one CSV line per joint and a JSON
-// file of every run.
-//   edgefit bench [--assets=robot,conveyor] [--scenes=without,with]
-//                 [--weighting=uniform,edge] [--spacing_mm=1.7] [--noise_mm=1]
-//                 [--scanners=3] [--seed=1] [--w_high=10] [--only=POSTURE,...]
-//                 [--out_csv=F.csv] [--out_json=F.json]
+// edgefit bench: the paper's evaluation (Sec. 7.3-7.4) and its ablations in
+// one command. The bundled robot (with its weld gun) and conveyor, each in
+// its named postures, scanned without and with accessories and fitted with
+// uniform and edge weights: Table 1 (rotation error per joint, degrees) and
+// Table 2 (translation error per joint, mm), then base and tool-tip errors
+// and the time per stage, as Markdown on stdout; optionally one CSV line per
+// joint and a JSON file of every run.
+//
+// Ablations: every list flag below is an axis; the bench runs their product.
+// Scan axes (a new virtual scan each): --noises_mm, --scanner_counts,
+// --repeats (seeds seed, seed+1, ...: other base poses, scenes and fit
+// seeds). Fit axes (the same scan, fitted again): --weightings, --w_highs,
+// --lambdas, --losses, --sweep_steps_deg, --searches, --refine_chains.
+// With any axis of more than one value, a summary per setting follows:
+// mean, 95th percentile and largest error, failure rate and time.
 #include <gflags/gflags.h>
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -24,6 +29,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
+#include "costs/robust_loss.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/pipeline/asset_kind.h"
@@ -41,24 +47,135 @@ DEFINE_string(scenes, "without,with", "Bench: scenes without and/or with accesso
 DEFINE_string(weightings, "uniform,edge", "Bench: fits with uniform and/or edge weights.");
 DEFINE_string(only, "", "Bench: only these postures (names, comma-separated).");
 DEFINE_double(base_range_m, 1.0, "Bench: random base x, y in [-r, r] [m]; yaw uniform.");
+DEFINE_string(w_highs, "", "Bench ablation: Eq. (6) w_high values (default: --w_high).");
+DEFINE_string(lambdas, "",
+              "Bench ablation: Eq. (10)/(14) penalty weights (default: --lambda); they act "
+              "with --parameterization=pose_penalty.");
+DEFINE_string(losses, "",
+              "Bench ablation: losses of the precise stages (default: --loss): trivial, huber, "
+              "cauchy, soft_l1, arctan, tukey; the sweeps keep Eq. (9).");
+DEFINE_string(sweep_steps_deg, "",
+              "Bench ablation: coarse step of the Eq. (9) sweep of revolute joints [deg] "
+              "(default 1).");
+DEFINE_string(searches, "lattice",
+              "Bench ablation: correspondences of the precise stages: lattice and/or kdtree.");
+DEFINE_string(refine_chains, "",
+              "Bench ablation: off and/or on: the whole-chain refinement (default: "
+              "--refine_chain).");
+DEFINE_string(noises_mm, "", "Bench ablation: range noise sigmas [mm] (default: --noise_mm).");
+DEFINE_string(scanner_counts, "", "Bench ablation: scanner counts (default: --scanners).");
+DEFINE_int32(repeats, 1,
+             "Bench: each scene with seeds seed .. seed+repeats-1 (other base poses, scans and "
+             "fit seeds).");
 DEFINE_string(out_csv, "", "Bench: optional CSV, one line per fitted joint.");
 DECLARE_string(out_json);  // edges_command.cc; bench: the JSON of every run
 DECLARE_double(spacing_mm);
 DECLARE_double(noise_mm);
 DECLARE_int32(scanners);
+DECLARE_double(lambda);  // fit_command.cc
+DECLARE_string(loss);
+DECLARE_double(loss_scale_mm);
+DECLARE_string(parameterization);
+DECLARE_bool(refine_chain);
 
 namespace edgefit::tools {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
+// A scan of the product of the scan axes.
+struct ScanSetting {
+  std::string accessories;  // "without" / "with"
+  double noise_mm = 1.0;
+  int scanners = 3;
+  int repeat = 0;
+};
+
+// A fit of the product of the fit axes.
+struct FitSetting {
+  std::string weighting;
+  double w_high = 10.0;
+  double lambda = 1.0;
+  std::string loss;
+  double sweep_step_deg = 1.0;
+  std::string search;
+  bool refine_chain = false;
+};
+
 struct Run {
-  std::string asset, posture, accessories, weighting;
+  std::string asset, posture;
+  ScanSetting scan;
+  FitSetting fit;
+  std::string label;  // the varied settings, e.g. "w_high=5"
   BenchResult result;
 };
 
+// The axes given more than one value, for the labels.
+struct Axes {
+  bool noise = false, scanners = false, repeat = false;
+  bool w_high = false, lambda = false, loss = false, sweep_step = false, search = false,
+       refine = false;
+};
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
+
+std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& fit) {
+  std::vector<std::string> parts;
+  if (axes.noise) parts.push_back("noise=" + Number(scan.noise_mm) + "mm");
+  if (axes.scanners) parts.push_back("scanners=" + std::to_string(scan.scanners));
+  if (axes.w_high) parts.push_back("w_high=" + Number(fit.w_high));
+  if (axes.lambda) parts.push_back("lambda=" + Number(fit.lambda));
+  if (axes.loss) parts.push_back("loss=" + fit.loss);
+  if (axes.sweep_step) parts.push_back("sweep_step=" + Number(fit.sweep_step_deg) + "deg");
+  if (axes.search) parts.push_back("search=" + fit.search);
+  if (axes.refine) parts.push_back(fit.refine_chain ? "refine_chain" : "sequential");
+  std::string label;
+  for (const std::string& p : parts) label += (label.empty() ? "" : " ") + p;
+  return label.empty() ? "-" : label;
+}
+
+RobotFitOptions OptionsFor(AssetKind kind, const FitSetting& fit, uint64_t seed,
+                           JointParameterization parameterization) {
+  RobotFitOptions options = FitOptionsFor(kind);
+  options.uniform_weights = fit.weighting == "uniform";
+  options.edges.w_high = fit.w_high;
+  options.seed = seed;
+  for (WeightedIcpOptions* icp : {&options.base_icp, &options.joint_icp, &options.subtree_icp,
+                                  &options.chain_refinement.icp}) {
+    icp->loss = fit.loss;
+    icp->loss_scale = FLAGS_loss_scale_mm * 1e-3;
+    icp->lambda = fit.lambda;
+    icp->correspondence.use_lattice = fit.search == "lattice";
+  }
+  options.joint_icp.parameterization = options.subtree_icp.parameterization = parameterization;
+  options.sweep.revolute_step = fit.sweep_step_deg * kDeg;
+  options.refine_chain = fit.refine_chain;
+  return options;
+}
+
+// Parses a comma list of numbers; an empty list gives `fallback`.
+Status ParseNumbers(const std::string& flag, const std::string& list, double fallback,
+                    std::vector<double>* out) {
+  out->clear();
+  for (const std::string& item : SplitList(list)) {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0' || !std::isfinite(value)) {
+      return Status::Error("--" + flag + ": '" + item + "' is not a number");
+    }
+    out->push_back(value);
+  }
+  if (out->empty()) out->push_back(fallback);
+  return Status::Ok();
+}
+
 // Table 1 or 2 for one asset: a row per run, a column per joint of the kind.
-void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, bool prismatic) {
+void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, bool prismatic,
+                     bool labelled) {
   std::vector<std::string> joints;
   for (const Run& run : runs) {
     if (run.asset != asset) continue;
@@ -70,16 +187,17 @@ void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, boo
     }
   }
   if (joints.empty()) return;
-  std::printf("\n%s (%s):\n\n| posture | accessories | weights |", asset.c_str(),
-              prismatic ? "mm" : "degrees");
+  std::printf("\n%s (%s):\n\n| posture | accessories | weights |%s", asset.c_str(),
+              prismatic ? "mm" : "degrees", labelled ? " settings |" : "");
   for (const std::string& j : joints) std::printf(" %s |", j.c_str());
-  std::printf("\n|---|---|---|");
+  std::printf("\n|---|---|---|%s", labelled ? "---|" : "");
   for (size_t k = 0; k < joints.size(); ++k) std::printf("---|");
   std::printf("\n");
   for (const Run& run : runs) {
     if (run.asset != asset) continue;
-    std::printf("| %s | %s | %s |", run.posture.c_str(), run.accessories.c_str(),
-                run.weighting.c_str());
+    std::printf("| %s | %s | %s |", run.posture.c_str(), run.scan.accessories.c_str(),
+                run.fit.weighting.c_str());
+    if (labelled) std::printf(" %s |", run.label.c_str());
     for (const std::string& j : joints) {
       for (const JointError& e : run.result.errors.joints) {
         if (e.name == j) std::printf(" %.4f |", prismatic ? 1e3 * e.error : e.error / kDeg);
@@ -87,6 +205,92 @@ void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, boo
     }
     std::printf("\n");
   }
+}
+
+// One row per (asset, accessories, weights, settings): the errors of all its
+// runs (postures, repeats) pooled.
+void PrintSummary(const std::vector<Run>& runs) {
+  std::vector<std::string> keys;
+  std::map<std::string, std::vector<const Run*>> groups;
+  for (const Run& run : runs) {
+    const std::string key =
+        run.asset + " | " + run.scan.accessories + " | " + run.fit.weighting + " | " + run.label;
+    if (groups.count(key) == 0) keys.push_back(key);
+    groups[key].push_back(&run);
+  }
+  std::printf(
+      "\n## Per setting (postures and repeats pooled)\n\n| asset | accessories | weights | "
+      "settings | fits | revolute mean | p95 | max [deg] | prismatic mean | p95 | max [mm] | "
+      "tool tip mean | p95 [mm] | base mean [mm] | failed | not ok | mean time [s] |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const std::string& key : keys) {
+    std::vector<double> revolute, prismatic, tip, base, time;
+    int failed = 0, not_ok = 0;
+    for (const Run* run : groups[key]) {
+      const BenchResult& r = run->result;
+      for (const JointError& e : r.errors.joints) {
+        if (!e.independent) continue;
+        (e.prismatic ? prismatic : revolute)
+            .push_back(e.prismatic ? 1e3 * e.error : e.error / kDeg);
+      }
+      tip.push_back(1e3 * r.errors.tool_tip);
+      base.push_back(1e3 * r.errors.base_translation);
+      time.push_back(r.timings.total);
+      failed += r.failed;
+      not_ok += !r.ok;
+    }
+    const ErrorStats rev = SummarizeErrors(revolute), pri = SummarizeErrors(prismatic);
+    const ErrorStats t = SummarizeErrors(tip);
+    const size_t n = groups[key].size();
+    std::printf(
+        "| %s | %zu | %.4f | %.4f | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.0f%% | "
+        "%.0f%% | %.1f |\n",
+        key.c_str(), n, rev.mean, rev.p95, rev.max, pri.mean, pri.p95, pri.max, t.mean, t.p95,
+        SummarizeErrors(base).mean, 100.0 * failed / static_cast<double>(n),
+        100.0 * not_ok / static_cast<double>(n), SummarizeErrors(time).mean);
+  }
+}
+
+nlohmann::json RunJson(const Run& run) {
+  nlohmann::json joints = nlohmann::json::object(), prismatic = nlohmann::json::array();
+  for (const JointError& e : run.result.errors.joints) {
+    if (!e.independent) continue;
+    joints[e.name] = e.error;
+    if (e.prismatic) prismatic.push_back(e.name);
+  }
+  const RobotFitTimings& t = run.result.timings;
+  return {{"asset", run.asset},
+          {"posture", run.posture},
+          {"accessories", run.scan.accessories},
+          {"weighting", run.fit.weighting},
+          {"label", run.label},
+          {"settings",
+           {{"noise_mm", run.scan.noise_mm},
+            {"scanners", run.scan.scanners},
+            {"repeat", run.scan.repeat},
+            {"w_high", run.fit.w_high},
+            {"lambda", run.fit.lambda},
+            {"loss", run.fit.loss},
+            {"sweep_step_deg", run.fit.sweep_step_deg},
+            {"search", run.fit.search},
+            {"refine_chain", run.fit.refine_chain}}},
+          {"points", run.result.points},
+          {"joint_errors", joints},  // independent joints [rad] or [m]
+          {"prismatic_joints", prismatic},
+          {"base_translation_m", run.result.errors.base_translation},
+          {"base_rotation_rad", run.result.errors.base_rotation},
+          {"tool_tip_link", run.result.errors.tool_tip_link},
+          {"tool_tip_m", run.result.errors.tool_tip},
+          {"covariance_ok", run.result.chain.covariance_ok},
+          {"timing_s",
+           {{"edges", t.edges},
+            {"base_rough", t.base_rough},
+            {"base_precise", t.base_precise},
+            {"chain", t.chain},
+            {"refine", t.refine},
+            {"total", t.total}}},
+          {"ok", run.result.ok},
+          {"failed", run.result.failed}};
 }
 
 int RunBench(const Command& command) {
@@ -103,10 +307,78 @@ int RunBench(const Command& command) {
   for (const std::string& w : weightings) {
     if (w != "uniform" && w != "edge") return BadInput(command, "--weightings: uniform, edge");
   }
-  if (!(FLAGS_spacing_mm > 0.0) || !(FLAGS_noise_mm >= 0.0) || FLAGS_scanners < 1) {
-    return BadInput(command, "--spacing_mm must be > 0, --noise_mm >= 0, --scanners >= 1");
+  std::vector<double> w_highs, lambdas, sweep_steps, noises, scanner_counts;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                               ParseNumbers("w_highs", FLAGS_w_highs, FLAGS_w_high, &w_highs));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                               ParseNumbers("lambdas", FLAGS_lambdas, FLAGS_lambda, &lambdas));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, ParseNumbers("sweep_steps_deg", FLAGS_sweep_steps_deg, 1.0, &sweep_steps));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                               ParseNumbers("noises_mm", FLAGS_noises_mm, FLAGS_noise_mm, &noises));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseNumbers("scanner_counts", FLAGS_scanner_counts,
+                                                     FLAGS_scanners, &scanner_counts));
+  std::vector<std::string> losses = SplitList(FLAGS_losses);
+  if (losses.empty()) losses.push_back(FLAGS_loss);
+  for (const std::string& loss : losses) {
+    if (std::find(LossNames().begin(), LossNames().end(), loss) == LossNames().end()) {
+      return BadInput(command, "--losses: unknown loss '" + loss + "'");
+    }
+  }
+  const std::vector<std::string> searches = SplitList(FLAGS_searches);
+  for (const std::string& s : searches) {
+    if (s != "lattice" && s != "kdtree") return BadInput(command, "--searches: lattice, kdtree");
+  }
+  std::vector<std::string> refines = SplitList(FLAGS_refine_chains);
+  if (refines.empty()) refines.push_back(FLAGS_refine_chain ? "on" : "off");
+  for (const std::string& r : refines) {
+    if (r != "on" && r != "off") return BadInput(command, "--refine_chains: off, on");
+  }
+  JointParameterization parameterization = JointParameterization::kJointSpace;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, ParseJointParameterization(FLAGS_parameterization, &parameterization));
+  if (lambdas.size() > 1 && parameterization != JointParameterization::kPoseWithPenalties) {
+    return BadInput(command, "--lambdas acts only with --parameterization=pose_penalty");
+  }
+  for (const double w : w_highs) {
+    if (!(w >= 1.0)) return BadInput(command, "--w_highs: w_high must be >= 1");
+  }
+  for (const double s : sweep_steps) {
+    if (!(s > 0.0)) return BadInput(command, "--sweep_steps_deg must be > 0");
+  }
+  for (const double n : noises) {
+    if (!(n >= 0.0)) return BadInput(command, "--noises_mm must be >= 0");
+  }
+  for (const double c : scanner_counts) {
+    if (!(c >= 1.0) || c != std::floor(c)) {
+      return BadInput(command, "--scanner_counts must be whole numbers >= 1");
+    }
+  }
+  if (!(FLAGS_spacing_mm > 0.0) || FLAGS_repeats < 1) {
+    return BadInput(command, "--spacing_mm must be > 0 and --repeats >= 1");
   }
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
+
+  Axes axes;
+  axes.noise = noises.size() > 1;
+  axes.scanners = scanner_counts.size() > 1;
+  axes.repeat = FLAGS_repeats > 1;
+  axes.w_high = w_highs.size() > 1;
+  axes.lambda = lambdas.size() > 1;
+  axes.loss = losses.size() > 1;
+  axes.sweep_step = sweep_steps.size() > 1;
+  axes.search = searches.size() > 1;
+  axes.refine = refines.size() > 1;
+  std::vector<FitSetting> fits;
+  for (const std::string& weighting : weightings)
+    for (const double w_high : w_highs)
+      for (const double lambda : lambdas)
+        for (const std::string& loss : losses)
+          for (const double step : sweep_steps)
+            for (const std::string& search : searches)
+              for (const std::string& refine : refines) {
+                fits.push_back({weighting, w_high, lambda, loss, step, search, refine == "on"});
+              }
 
   std::vector<Run> runs;
   for (const std::string& asset : assets) {
@@ -118,94 +390,86 @@ int RunBench(const Command& command) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(
         command, LoadModelWithAttachments(robot ? FLAGS_robot_urdf : FLAGS_conveyor_urdf, specs,
                                           ModelLoadOptions(), &model));
-    std::vector<BenchCase> cases;
-    EDGEFIT_RETURN_IF_ERROR_EXIT(
-        command, NamedPostureCases(model, robot ? FLAGS_robot_postures : FLAGS_conveyor_postures,
-                                   FLAGS_seed, FLAGS_base_range_m, &cases));
     AssetKind kind = AssetKind::kArticulated;
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseAssetKind("auto", model, &kind));
-    for (const BenchCase& c : cases) {
-      if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
-      for (const std::string& scenery : sceneries) {
-        AssetScanOptions scan_options;
-        scan_options.accessories = scenery == "with";
-        scan_options.scanners = FLAGS_scanners;
-        scan_options.scan.spacing = 1e-3 * FLAGS_spacing_mm;
-        scan_options.scan.noise_sigma = 1e-3 * FLAGS_noise_mm;
-        Progress("bench: scanning " + asset + " " + c.name + ", " + scenery + " accessories");
-        VirtualScan scan;
-        EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScanBenchCase(model, c, scan_options, &scan));
-        for (const std::string& weighting : weightings) {
-          RobotFitOptions options = FitOptionsFor(kind);
-          options.uniform_weights = weighting == "uniform";
-          options.edges.w_high = FLAGS_w_high;
-          options.seed = FLAGS_seed;
-          Run run{asset, c.name, scenery, weighting, {}};
-          Progress("bench: " + asset + " " + c.name + ", " + scenery + " accessories, " +
-                   weighting + " weights");
-          EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                                       FitBenchCase(model, c, scan.scans, options, &run.result));
-          runs.push_back(std::move(run));
-        }
+    for (int repeat = 0; repeat < FLAGS_repeats; ++repeat) {
+      const uint64_t seed = FLAGS_seed + static_cast<uint64_t>(repeat);
+      std::vector<BenchCase> cases;
+      EDGEFIT_RETURN_IF_ERROR_EXIT(
+          command, NamedPostureCases(model, robot ? FLAGS_robot_postures : FLAGS_conveyor_postures,
+                                     seed, FLAGS_base_range_m, &cases));
+      for (const BenchCase& c : cases) {
+        if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
+        for (const std::string& scenery : sceneries)
+          for (const double noise : noises)
+            for (const double scanners : scanner_counts) {
+              const ScanSetting scan_setting{scenery, noise, static_cast<int>(scanners), repeat};
+              AssetScanOptions scan_options;
+              scan_options.accessories = scenery == "with";
+              scan_options.scanners = scan_setting.scanners;
+              scan_options.scan.spacing = 1e-3 * FLAGS_spacing_mm;
+              scan_options.scan.noise_sigma = 1e-3 * noise;
+              const std::string scene = asset + " " + c.name + ", " + scenery + " accessories" +
+                                        (axes.repeat ? ", seed " + std::to_string(seed) : "");
+              Progress("bench: scanning " + scene);
+              VirtualScan scan;
+              EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScanBenchCase(model, c, scan_options, &scan));
+              for (const FitSetting& fit : fits) {
+                Run run{asset, c.name, scan_setting, fit, Label(axes, scan_setting, fit), {}};
+                Progress("bench: " + scene + ", " + fit.weighting + " weights, " + run.label);
+                EDGEFIT_RETURN_IF_ERROR_EXIT(
+                    command,
+                    FitBenchCase(model, c, scan.scans,
+                                 OptionsFor(kind, fit, seed, parameterization), &run.result));
+                runs.push_back(std::move(run));
+              }
+            }
       }
     }
   }
 
+  const bool labelled = fits.size() > weightings.size() || axes.noise || axes.scanners;
   std::printf("## Table 1: rotation error per joint [deg]\n");
-  for (const std::string& asset : assets) PrintJointTable(runs, asset, false);
+  for (const std::string& asset : assets) PrintJointTable(runs, asset, false, labelled);
   std::printf("\n## Table 2: translation error per joint [mm]\n");
-  for (const std::string& asset : assets) PrintJointTable(runs, asset, true);
+  for (const std::string& asset : assets) PrintJointTable(runs, asset, true, labelled);
   std::printf(
-      "\n## Base and time per stage\n\n| asset | posture | accessories | weights | points | "
-      "base [mm] | base [deg] | edges | base rough | base precise | chain | total | ok |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "\n## Base, tool tip and time per stage\n\n| asset | posture | accessories | weights | "
+      "settings | points | base [mm] | base [deg] | tool tip [mm] | edges | base rough | "
+      "base precise | chain | refine | total | ok |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Run& run : runs) {
     const BenchResult& r = run.result;
     std::printf(
-        "| %s | %s | %s | %s | %.2f M | %.3f | %.4f | %.2f s | %.2f s | %.2f s | %.2f s | %.2f s "
-        "| %s |\n",
-        run.asset.c_str(), run.posture.c_str(), run.accessories.c_str(), run.weighting.c_str(),
-        1e-6 * static_cast<double>(r.points), 1e3 * r.errors.base_translation,
-        r.errors.base_rotation / kDeg, r.timings.edges, r.timings.base_rough,
-        r.timings.base_precise, r.timings.chain, r.timings.total,
-        r.failed ? "FAILED" : (r.ok ? "ok" : "not ok"));
+        "| %s | %s | %s | %s | %s | %.2f M | %.3f | %.4f | %.3f | %.2f s | %.2f s | %.2f s | "
+        "%.2f s | %.2f s | %.2f s | %s |\n",
+        run.asset.c_str(), run.posture.c_str(), run.scan.accessories.c_str(),
+        run.fit.weighting.c_str(), run.label.c_str(), 1e-6 * static_cast<double>(r.points),
+        1e3 * r.errors.base_translation, r.errors.base_rotation / kDeg, 1e3 * r.errors.tool_tip,
+        r.timings.edges, r.timings.base_rough, r.timings.base_precise, r.timings.chain,
+        r.timings.refine, r.timings.total, r.failed ? "FAILED" : (r.ok ? "ok" : "not ok"));
   }
+  if (labelled || axes.repeat) PrintSummary(runs);
 
   if (!FLAGS_out_csv.empty()) {
     std::ostringstream csv;
-    csv << "asset,posture,accessories,weighting,joint,prismatic,truth,fit,error\n";
+    csv << "asset,posture,accessories,weighting,noise_mm,scanners,repeat,w_high,lambda,loss,"
+           "sweep_step_deg,search,refine_chain,joint,prismatic,truth,fit,error,ok,failed\n";
     for (const Run& run : runs) {
       for (const JointError& e : run.result.errors.joints) {
-        csv << run.asset << ',' << run.posture << ',' << run.accessories << ',' << run.weighting
-            << ',' << e.name << ',' << e.prismatic << ',' << e.truth << ',' << e.fit << ','
-            << e.error << '\n';
+        csv << run.asset << ',' << run.posture << ',' << run.scan.accessories << ','
+            << run.fit.weighting << ',' << run.scan.noise_mm << ',' << run.scan.scanners << ','
+            << run.scan.repeat << ',' << run.fit.w_high << ',' << run.fit.lambda << ','
+            << run.fit.loss << ',' << run.fit.sweep_step_deg << ',' << run.fit.search << ','
+            << run.fit.refine_chain << ',' << e.name << ',' << e.prismatic << ',' << e.truth << ','
+            << e.fit << ',' << e.error << ',' << run.result.ok << ',' << run.result.failed << '\n';
       }
     }
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, WriteStringAtomically(FLAGS_out_csv, csv.str()));
   }
   if (!FLAGS_out_json.empty()) {
     nlohmann::json out = nlohmann::json::array();
-    for (const Run& run : runs) {
-      nlohmann::json joints = nlohmann::json::object();
-      for (const JointError& e : run.result.errors.joints) joints[e.name] = e.error;
-      const RobotFitTimings& t = run.result.timings;
-      out.push_back({{"asset", run.asset},
-                     {"posture", run.posture},
-                     {"accessories", run.accessories},
-                     {"weighting", run.weighting},
-                     {"points", run.result.points},
-                     {"joint_errors", joints},
-                     {"base_translation_m", run.result.errors.base_translation},
-                     {"base_rotation_rad", run.result.errors.base_rotation},
-                     {"timing_s",
-                      {{"edges", t.edges},
-                       {"base_rough", t.base_rough},
-                       {"base_precise", t.base_precise},
-                       {"chain", t.chain},
-                       {"total", t.total}}},
-                     {"ok", run.result.ok},
-                     {"failed", run.result.failed}});
-    }
+    for (const Run& run : runs) out.push_back(RunJson(run));
     EDGEFIT_RETURN_IF_ERROR_EXIT(command,
                                  WriteStringAtomically(FLAGS_out_json, out.dump(2) + "\n"));
   }
@@ -215,19 +479,36 @@ int RunBench(const Command& command) {
 }  // namespace
 
 Command BenchCommand() {
-  return {"bench",
-          "the paper's evaluation (Sec. 7.3-7.4): robot and conveyor, postures x accessories x "
-          "weights, per-joint error tables",
-          "Usage:\n"
-          "  edgefit bench [--assets=robot,conveyor] [--scenes=without,with]\n"
-          "                [--weightings=uniform,edge] [--spacing_mm=1.7] [--noise_mm=1]\n"
-          "                [--scanners=3] [--seed=1] [--w_high=10] [--only=POSTURE,...]\n"
-          "                [--out_csv=F.csv] [--out_json=F.json] [--threads=N]\n"
-          "Run from the source folder (the defaults name assets/...).",
-          {"assets", "robot_urdf", "robot_attach", "robot_postures", "conveyor_urdf",
-           "conveyor_postures", "scenes", "weightings", "only", "base_range_m", "out_csv",
-           "out_json", "spacing_mm", "noise_mm", "scanners", "seed", "w_high", "threads"},
-          RunBench};
+  return {
+      "bench",
+      "the paper's evaluation (Sec. 7.3-7.4) and its ablations: robot and conveyor, postures "
+      "x accessories x weights x settings, per-joint error tables",
+      "Usage:\n"
+      "  edgefit bench [--assets=robot,conveyor] [--scenes=without,with]\n"
+      "                [--weightings=uniform,edge] [--spacing_mm=1.7] [--noise_mm=1]\n"
+      "                [--scanners=3] [--seed=1] [--w_high=10] [--only=POSTURE,...]\n"
+      "                [--out_csv=F.csv] [--out_json=F.json] [--threads=N]\n"
+      "Ablations (comma lists; the bench runs their product, then a summary per "
+      "setting):\n"
+      "                [--w_highs=1,2,5,10,20,50,100] [--lambdas=0.1,1,10 "
+      "--parameterization=pose_penalty]\n"
+      "                [--losses=trivial,huber,cauchy,soft_l1,tukey] [--sweep_steps_deg=0.5,1,2]\n"
+      "                [--searches=lattice,kdtree] [--refine_chains=off,on]\n"
+      "                [--noises_mm=0,1,2,3] [--scanner_counts=1,2,3,4] [--repeats=N]\n"
+      "Run from the source folder (the defaults name assets/...). "
+      "benchmarks/plot_ablation.py draws error against w_high or lambda from --out_json.",
+      {"assets",         "robot_urdf",    "robot_attach",
+       "robot_postures", "conveyor_urdf", "conveyor_postures",
+       "scenes",         "weightings",    "only",
+       "base_range_m",   "w_highs",       "lambdas",
+       "losses",         "loss_scale_mm", "sweep_steps_deg",
+       "searches",       "refine_chains", "noises_mm",
+       "scanner_counts", "repeats",       "parameterization",
+       "out_csv",        "out_json",      "spacing_mm",
+       "noise_mm",       "scanners",      "seed",
+       "w_high",         "lambda",        "loss",
+       "refine_chain",   "threads"},
+      RunBench};
 }
 
 }  // namespace edgefit::tools

@@ -1,5 +1,8 @@
 #include "edgefit/pipeline/bench_case.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/scanner/truth.h"
@@ -47,6 +50,7 @@ Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, co
   EDGEFIT_RETURN_IF_ERROR(FitRobot(model, scans, fit_options, progress, &fit));
   result->timings = fit.timings;
   result->bodies = fit.bodies;
+  result->chain = fit.chain_refinement;
   result->ok = fit.ok;
   result->message = fit.message;
   EDGEFIT_RETURN_IF_ERROR(CompareWithTruth(model, fit.q, fit.T_world_base,
@@ -58,6 +62,19 @@ Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, co
     }
   }
   return Status::Ok();
+}
+
+ErrorStats SummarizeErrors(std::vector<double> values) {
+  ErrorStats stats;
+  if (values.empty()) return stats;
+  std::sort(values.begin(), values.end());
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  stats.mean = sum / static_cast<double>(values.size());
+  const size_t k = static_cast<size_t>(std::ceil(0.95 * static_cast<double>(values.size())));
+  stats.p95 = values[std::min(std::max<size_t>(k, 1) - 1, values.size() - 1)];
+  stats.max = values.back();
+  return stats;
 }
 
 }  // namespace edgefit

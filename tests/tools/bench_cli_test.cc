@@ -1,6 +1,6 @@
 // edgefit bench through the command line: the paper's tables for a small
-// selection (one conveyor posture, coarse scan), CSV and JSON outputs, bad
-// flags (issue 8).
+// selection (one conveyor posture, coarse scan), CSV and JSON outputs, an
+// ablation axis and its summary, bad flags (issue 8).
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -35,7 +35,37 @@ TEST_F(CliTest, BenchPrintsThePapersTables) {
   }
 }
 
+TEST_F(CliTest, BenchRunsTheProductOfItsAblationAxes) {
+  const RunResult r = Run("bench --assets=conveyor --conveyor_urdf=" + kAssets +
+                          "conveyor/conveyor.urdf --conveyor_postures=" + kAssets +
+                          "conveyor/postures.json --only=load --scenes=without "
+                          "--weightings=edge --spacing_mm=8 --refine_chains=off,on --out_json=" +
+                          Path("ablation.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("## Per setting"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| conveyor | without | edge | sequential | 1 |"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("| conveyor | without | edge | refine_chain | 1 |"), std::string::npos)
+      << r.out;
+  const nlohmann::json json = nlohmann::json::parse(Slurp(Path("ablation.json")));
+  ASSERT_EQ(json.size(), 2u);
+  EXPECT_FALSE(json[0]["settings"]["refine_chain"].get<bool>());
+  EXPECT_TRUE(json[1]["settings"]["refine_chain"].get<bool>());
+  EXPECT_EQ(json[1]["label"], "refine_chain");
+  EXPECT_EQ(json[1]["prismatic_joints"].size(), 6u);
+  for (const auto& [joint, error] : json[1]["joint_errors"].items()) {
+    EXPECT_LT(error.get<double>(), 0.002) << joint;
+  }
+}
+
 TEST_F(CliTest, BenchBadInput) {
+  ExpectBadInput("bench --lambdas=0.1,1", "pose_penalty");
+  ExpectBadInput("bench --losses=l3", "l3");
+  ExpectBadInput("bench --searches=octree", "--searches");
+  ExpectBadInput("bench --refine_chains=maybe", "--refine_chains");
+  ExpectBadInput("bench --noises_mm=loud", "loud");
+  ExpectBadInput("bench --scanner_counts=1.5", "--scanner_counts");
+  ExpectBadInput("bench --w_highs=0.5", "--w_highs");
   ExpectBadInput("bench --assets=crane", "--assets");
   ExpectBadInput("bench --scenes=maybe", "--scenes");
   ExpectBadInput("bench --weightings=heavy", "--weightings");

@@ -45,7 +45,8 @@ struct BenchResult {
   FitErrors errors;
   RobotFitTimings timings;
   std::vector<BodyQuality> bodies;
-  bool ok = false;  // the fit's own verdict (RobotFitResult::ok)
+  ChainRefinementSummary chain;  // refinement and covariance (joint_std)
+  bool ok = false;               // the fit's own verdict (RobotFitResult::ok)
   std::string message;
   bool failed = false;  // an independent joint beyond the bounds above
 };
@@ -59,6 +60,13 @@ Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
 Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
                     const RobotFitOptions& fit_options, BenchResult* result,
                     const ProgressFn& progress = nullptr);
+
+// Mean, 95th percentile (the smallest value at or above 95 % of them) and
+// largest of a set of errors; all 0 for none.
+struct ErrorStats {
+  double mean = 0.0, p95 = 0.0, max = 0.0;
+};
+ErrorStats SummarizeErrors(std::vector<double> values);
 
 }  // namespace edgefit
 
