@@ -91,7 +91,9 @@ struct RobotFitOptions {
   // Off by default: BENCHMARK.md ("Whole-chain refinement") measures it.
   // The covariance of the joints is computed either way (chain_refinement.
   // covariance) at the final estimate, with at most max_chain_samples per
-  // body.
+  // body: on the bundled robot (23 postures, accessories, 3 mm) 30000
+  // halved the revolute errors (mean 0.0081 -> 0.0035 deg); 5000 gained
+  // nothing (0.0075 deg) and put the base farther off.
   bool refine_chain = false;
   ChainRefinementOptions chain_refinement;
   int max_chain_samples = 30000;
