@@ -71,29 +71,52 @@ void SelectAndPose(const std::vector<SurfaceSamples>& link_samples,
   }
 }
 
-// Adds one residual block per correspondence to *problem.
-void AddResiduals(const ScanSet& scans, const PosedSamples& posed,
-                  const std::vector<Correspondence>& correspondences,
-                  const std::vector<bool>& point_to_point, const WeightedIcpOptions& icp,
-                  ceres::LossFunction* loss, LinkPoseSource* poses, double* delta_base, double* q,
-                  ceres::Problem* problem) {
-  for (const Correspondence& m : correspondences) {
-    const size_t k = static_cast<size_t>(m.source);
-    const int link = posed.link[k];
-    const Eigen::Vector3d target =
-        scans.scans[static_cast<size_t>(m.scan)].PointWorld(static_cast<size_t>(m.cell));
-    const bool plane = icp.point_to_plane && !point_to_point[static_cast<size_t>(link)] &&
-                       posed.n_world[k].squaredNorm() > 0.0;
-    const double w_edge = icp.uniform_weights ? 1.0 : static_cast<double>(m.weight);
-    auto* cost = new ChainPointCost(poses, link, posed.p_link[k], target,
-                                    plane ? &posed.n_world[k] : nullptr, w_edge);
-    if (poses->num_joints() > 0) {
-      problem->AddResidualBlock(cost, loss, delta_base, q);
-    } else {
-      problem->AddResidualBlock(cost, loss, delta_base);
+ceres::Problem::Options ProblemOptions() {
+  ceres::Problem::Options options;
+  options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.disable_all_safety_checks = true;  // blocks are built right here
+  return options;
+}
+
+// The problem of one iteration (or of the covariance): the parameters
+// about (T_world_base, q_full) and one residual block per correspondence.
+struct ChainProblem {
+  ChainProblem(const KinematicModel& model, const Pose& T_world_base,
+               const std::vector<double>& q_full, const ScanSet& scans, const PosedSamples& posed,
+               const std::vector<Correspondence>& correspondences,
+               const std::vector<bool>& point_to_point, const WeightedIcpOptions& icp,
+               ceres::LossFunction* loss)
+      : kinematics(&model, T_world_base, q_full),
+        q_independent(std::max<size_t>(kinematics.independent_joints().size(), 1), 0.0),
+        problem(ProblemOptions()) {
+    const std::vector<int>& independent = kinematics.independent_joints();
+    for (size_t k = 0; k < independent.size(); ++k) {
+      q_independent[k] = q_full[static_cast<size_t>(independent[k])];
+    }
+    for (const Correspondence& m : correspondences) {
+      const size_t k = static_cast<size_t>(m.source);
+      const int link = posed.link[k];
+      const Eigen::Vector3d target =
+          scans.scans[static_cast<size_t>(m.scan)].PointWorld(static_cast<size_t>(m.cell));
+      const bool plane = icp.point_to_plane && !point_to_point[static_cast<size_t>(link)] &&
+                         posed.n_world[k].squaredNorm() > 0.0;
+      const double w_edge = icp.uniform_weights ? 1.0 : static_cast<double>(m.weight);
+      auto* cost = new ChainPointCost(&kinematics, link, posed.p_link[k], target,
+                                      plane ? &posed.n_world[k] : nullptr, w_edge);
+      if (independent.empty()) {
+        problem.AddResidualBlock(cost, loss, delta_base);
+      } else {
+        problem.AddResidualBlock(cost, loss, delta_base, q_independent.data());
+      }
     }
   }
-}
+  bool has_joints() const { return !kinematics.independent_joints().empty(); }
+
+  ChainKinematics kinematics;
+  double delta_base[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  std::vector<double> q_independent;  // at least one entry
+  ceres::Problem problem;
+};
 
 // Joint limits as bounds of the q block.
 void BoundJoints(const KinematicModel& model, const std::vector<int>& independent, double* q,
@@ -104,13 +127,6 @@ void BoundJoints(const KinematicModel& model, const std::vector<int>& independen
     problem->SetParameterLowerBound(q, static_cast<int>(k), joint.lower);
     problem->SetParameterUpperBound(q, static_cast<int>(k), joint.upper);
   }
-}
-
-ceres::Problem::Options ProblemOptions() {
-  ceres::Problem::Options options;
-  options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  options.disable_all_safety_checks = true;  // blocks are built right here
-  return options;
 }
 
 // Largest distance a corner of any link's sample box moves between two
@@ -127,6 +143,42 @@ double MaxDisplacement(const std::vector<Eigen::AlignedBox3d>& boxes_link,
     }
   }
   return max_distance;
+}
+
+// The standard deviations of *summary from the covariance of the problem
+// at its parameters, scaled by the residual variance (cost: its Ceres cost).
+void Covariance(double cost, ChainProblem* chain, ChainRefinementSummary* summary) {
+  const std::vector<int>& independent = chain->kinematics.independent_joints();
+  const size_t parameters = 6 + independent.size();
+  const size_t residuals = static_cast<size_t>(chain->problem.NumResiduals());
+  if (residuals <= parameters) return;
+  summary->sigma = std::sqrt(2.0 * cost / static_cast<double>(residuals - parameters));
+  const double variance = summary->sigma * summary->sigma;
+  ceres::Covariance::Options covariance_options;
+  covariance_options.algorithm_type = ceres::DENSE_SVD;
+  covariance_options.num_threads = 1;
+  ceres::Covariance covariance(covariance_options);
+  const double* base = chain->delta_base;
+  const double* joints = chain->q_independent.data();
+  std::vector<std::pair<const double*, const double*>> blocks = {{base, base}};
+  if (chain->has_joints()) blocks.emplace_back(joints, joints);
+  if (!covariance.Compute(blocks, &chain->problem)) return;  // rank-deficient
+  double base_covariance[36];
+  covariance.GetCovarianceBlock(base, base, base_covariance);
+  for (int i = 0; i < 3; ++i) {
+    summary->base_rotation_std[i] = std::sqrt(variance * base_covariance[i * 6 + i]);
+    summary->base_translation_std[i] = std::sqrt(variance * base_covariance[(i + 3) * 6 + i + 3]);
+  }
+  const size_t n = independent.size();
+  if (n > 0) {
+    std::vector<double> joint_covariance(n * n);
+    covariance.GetCovarianceBlock(joints, joints, joint_covariance.data());
+    for (size_t k = 0; k < n; ++k) {
+      summary->joint_std[static_cast<size_t>(independent[k])] =
+          std::sqrt(variance * joint_covariance[k * n + k]);
+    }
+  }
+  summary->covariance_ok = true;
 }
 
 }  // namespace
@@ -198,27 +250,22 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
       summary->stop_reason = IcpStopReason::kTooFewCorrespondences;
       break;
     }
-    ChainKinematics kinematics(&model, T_base, q_full);
-    const std::vector<int>& independent = kinematics.independent_joints();
-    double delta_base[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    std::vector<double> q_independent(std::max<size_t>(independent.size(), 1), 0.0);
-    for (size_t k = 0; k < independent.size(); ++k) {
-      q_independent[k] = q_full[static_cast<size_t>(independent[k])];
+    ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, point_to_point, icp,
+                       loss.get());
+    if (chain.has_joints()) {
+      BoundJoints(model, chain.kinematics.independent_joints(), chain.q_independent.data(),
+                  &chain.problem);
     }
-    ceres::Problem problem(ProblemOptions());
-    AddResiduals(scans, posed, correspondences, point_to_point, icp, loss.get(), &kinematics,
-                 delta_base, q_independent.data(), &problem);
-    if (!independent.empty()) BoundJoints(model, independent, q_independent.data(), &problem);
     ceres::Solver::Summary solve;
-    ceres::Solve(solver_options, &problem, &solve);
+    ceres::Solve(solver_options, &chain.problem, &solve);
     if (!solve.IsSolutionUsable()) {
       summary->stop_reason = IcpStopReason::kSolverFailed;
       break;
     }
     ++summary->iterations;
     summary->final_cost = solve.final_cost;
-    const Pose T_base_next = kinematics.BasePose(delta_base);
-    const std::vector<double> q_next = kinematics.FullJoints(q_independent.data());
+    const Pose T_base_next = chain.kinematics.BasePose(chain.delta_base);
+    const std::vector<double> q_next = chain.kinematics.FullJoints(chain.q_independent.data());
     const double displacement =
         MaxDisplacement(boxes_link, T_world_link, model.ForwardKinematics(q_next, T_base_next));
     T_base = T_base_next;
@@ -239,50 +286,13 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
     SelectAndPose(link_samples, model.ForwardKinematics(q_full, T_base), visibility, icp.visibility,
                   final_gate, &posed);
     search->Find(posed.q_world, crop_world, gated, &correspondences);
-    ChainKinematics kinematics(&model, T_base, q_full);
-    const std::vector<int>& independent = kinematics.independent_joints();
-    const size_t parameters = 6 + independent.size();
-    double delta_base[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    std::vector<double> q_independent(std::max<size_t>(independent.size(), 1), 0.0);
-    for (size_t k = 0; k < independent.size(); ++k) {
-      q_independent[k] = q_full[static_cast<size_t>(independent[k])];
-    }
-    ceres::Problem problem(ProblemOptions());
-    AddResiduals(scans, posed, correspondences, point_to_point, icp, loss.get(), &kinematics,
-                 delta_base, q_independent.data(), &problem);
+    ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, point_to_point, icp,
+                       loss.get());
     summary->residual_blocks = correspondences.size();
     double cost = 0.0;
-    problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
+    chain.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
     if (!options.refine) summary->final_cost = cost;
-    const size_t residuals = static_cast<size_t>(problem.NumResiduals());
-    if (residuals > parameters) {
-      summary->sigma = std::sqrt(2.0 * cost / static_cast<double>(residuals - parameters));
-      ceres::Covariance::Options covariance_options;
-      covariance_options.algorithm_type = ceres::DENSE_SVD;
-      covariance_options.num_threads = 1;
-      ceres::Covariance covariance(covariance_options);
-      std::vector<std::pair<const double*, const double*>> blocks = {{delta_base, delta_base}};
-      if (!independent.empty()) blocks.emplace_back(q_independent.data(), q_independent.data());
-      if (covariance.Compute(blocks, &problem)) {
-        const double variance = summary->sigma * summary->sigma;
-        double base[36];
-        covariance.GetCovarianceBlock(delta_base, delta_base, base);
-        for (int i = 0; i < 3; ++i) {
-          summary->base_rotation_std[i] = std::sqrt(variance * base[i * 6 + i]);
-          summary->base_translation_std[i] = std::sqrt(variance * base[(i + 3) * 6 + i + 3]);
-        }
-        if (!independent.empty()) {
-          const size_t n = independent.size();
-          std::vector<double> joints(n * n);
-          covariance.GetCovarianceBlock(q_independent.data(), q_independent.data(), joints.data());
-          for (size_t k = 0; k < n; ++k) {
-            summary->joint_std[static_cast<size_t>(independent[k])] =
-                std::sqrt(variance * joints[k * n + k]);
-          }
-        }
-        summary->covariance_ok = true;
-      }
-    }
+    Covariance(cost, &chain, summary);
   }
 
   *T_world_base = T_base;

@@ -29,7 +29,7 @@ struct RobotScene {
   std::vector<double> q;  // the truth, every joint
   Pose T_world_base = Pose::Identity();
   ScanSet scans;
-  std::vector<SurfaceSamples> samples;  // per link, 4 mm
+  std::vector<SurfaceSamples> samples;  // per link, 8 mm
 };
 
 const RobotScene& GetScene() {
@@ -53,7 +53,7 @@ const RobotScene& GetScene() {
     CHECK(ScanAsset(out->model, out->q, out->T_world_base, options, &scan, nullptr).ok());
     out->scans = std::move(scan.scans);
     SamplingOptions sampling;
-    sampling.spacing = 0.004;
+    sampling.spacing = 0.008;
     out->samples = SampleModelSurfaces(out->model, sampling);
     return out;
   }();
