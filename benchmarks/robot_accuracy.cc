@@ -93,19 +93,6 @@ std::vector<std::string> Split(const std::string& text) {
   return out;
 }
 
-double Percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const size_t k = static_cast<size_t>(std::ceil(p * static_cast<double>(values.size()))) - 1;
-  return values[std::min(k, values.size() - 1)];
-}
-
-double Mean(const std::vector<double>& values) {
-  double sum = 0.0;
-  for (const double v : values) sum += v;
-  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
-}
-
 WeightedIcpOptions::Visibility IcpVisibility(const std::string& name) {
   if (name == "all") return WeightedIcpOptions::Visibility::kAll;
   if (name == "facing") return WeightedIcpOptions::Visibility::kFacing;
@@ -197,6 +184,9 @@ void PrintSummary(const std::string& config, const std::vector<FitRecord>& recor
     not_ok += !r.quality_ok;
     confident_wrong += r.failed && r.quality_ok;
   }
+  const ErrorStats rev = SummarizeErrors(revolute), pri = SummarizeErrors(prismatic);
+  const ErrorStats bt = SummarizeErrors(base_t), br = SummarizeErrors(base_r);
+  const ErrorStats tp = SummarizeErrors(tip);
   std::printf("\n### %s: %zu fits\n\n", config.c_str(), records.size());
   std::printf(
       "| revolute mean | p95 | max | prismatic mean | p95 | max | base mean | base max | "
@@ -206,18 +196,12 @@ void PrintSummary(const std::string& config, const std::vector<FitRecord>& recor
   std::printf(
       "| %.4f° | %.4f° | %.4f° | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.3f mm | %.4f° | %.4f° | "
       "%.3f mm | %.3f mm | %d | %d | %d | %.1f s |\n",
-      Mean(revolute), Percentile(revolute, 0.95),
-      revolute.empty() ? 0.0 : *std::max_element(revolute.begin(), revolute.end()), Mean(prismatic),
-      Percentile(prismatic, 0.95),
-      prismatic.empty() ? 0.0 : *std::max_element(prismatic.begin(), prismatic.end()), Mean(base_t),
-      *std::max_element(base_t.begin(), base_t.end()), Mean(base_r),
-      *std::max_element(base_r.begin(), base_r.end()), Mean(tip), Percentile(tip, 0.95), failed,
-      not_ok, confident_wrong, Mean(total));
+      rev.mean, rev.p95, rev.max, pri.mean, pri.p95, pri.max, bt.mean, bt.max, br.mean, br.max,
+      tp.mean, tp.p95, failed, not_ok, confident_wrong, SummarizeErrors(total).mean);
   std::printf("\n| joint | mean | p95 | max |\n|---|---|---|---|\n");
   for (const std::string& name : joint_order) {
-    const std::vector<double>& v = per_joint[name];
-    std::printf("| %s | %.4f | %.4f | %.4f |\n", name.c_str(), Mean(v), Percentile(v, 0.95),
-                *std::max_element(v.begin(), v.end()));
+    const ErrorStats stats = SummarizeErrors(per_joint[name]);
+    std::printf("| %s | %.4f | %.4f | %.4f |\n", name.c_str(), stats.mean, stats.p95, stats.max);
   }
   std::fflush(stdout);
 }
