@@ -207,6 +207,19 @@ void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, boo
   }
 }
 
+// "mean | p95 | max" of the errors with `format`, or dashes for none.
+std::string StatsCells(const std::vector<double>& errors, const char* format) {
+  if (errors.empty()) return "- | - | -";
+  const ErrorStats stats = SummarizeErrors(errors);
+  std::string cells;
+  for (const double v : {stats.mean, stats.p95, stats.max}) {
+    char cell[32];
+    std::snprintf(cell, sizeof(cell), format, v);
+    cells += (cells.empty() ? "" : " | ") + std::string(cell);
+  }
+  return cells;
+}
+
 // One row per (asset, accessories, weights, settings): the errors of all its
 // runs (postures, repeats) pooled.
 void PrintSummary(const std::vector<Run>& runs) {
@@ -239,15 +252,13 @@ void PrintSummary(const std::vector<Run>& runs) {
       failed += r.failed;
       not_ok += !r.ok;
     }
-    const ErrorStats rev = SummarizeErrors(revolute), pri = SummarizeErrors(prismatic);
     const ErrorStats t = SummarizeErrors(tip);
     const size_t n = groups[key].size();
-    std::printf(
-        "| %s | %zu | %.4f | %.4f | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.0f%% | "
-        "%.0f%% | %.1f |\n",
-        key.c_str(), n, rev.mean, rev.p95, rev.max, pri.mean, pri.p95, pri.max, t.mean, t.p95,
-        SummarizeErrors(base).mean, 100.0 * failed / static_cast<double>(n),
-        100.0 * not_ok / static_cast<double>(n), SummarizeErrors(time).mean);
+    std::printf("| %s | %zu | %s | %s | %.3f | %.3f | %.3f | %.0f%% | %.0f%% | %.1f |\n",
+                key.c_str(), n, StatsCells(revolute, "%.4f").c_str(),
+                StatsCells(prismatic, "%.3f").c_str(), t.mean, t.p95, SummarizeErrors(base).mean,
+                100.0 * failed / static_cast<double>(n), 100.0 * not_ok / static_cast<double>(n),
+                SummarizeErrors(time).mean);
   }
 }
 
