@@ -6,7 +6,8 @@
 One panel for revolute joints (mean error, degrees) and one for prismatic
 joints (mean error, mm); a line per asset, accessories and weighting (and
 per value of any other varied setting), the 95th percentile dashed. The
-x axis is logarithmic when every value is positive. Needs Debian's
+x axis is logarithmic when every value is positive, the y axis when the
+errors span more than a factor of 10. Needs Debian's
 python3-matplotlib (apt-get install python3-matplotlib).
 """
 
@@ -75,7 +76,10 @@ def main():
             axis.set_xscale("log")
             axis.set_xticks(values)
             axis.set_xticklabels([f"{v:g}" for v in values])
-        axis.grid(True, alpha=0.3)
+        plotted = [v for key in data for x in data[key] for v in data[key][x]]
+        if plotted and min(plotted) > 0 and max(plotted) > 10 * min(plotted):
+            axis.set_yscale("log")  # assets whose errors differ by orders of magnitude
+        axis.grid(True, alpha=0.3, which="both")
         if data:
             axis.legend(fontsize=7)
     fig.suptitle(args.title or f"edgefit bench: error against {args.setting} "
