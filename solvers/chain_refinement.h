@@ -46,6 +46,8 @@ struct ChainRefinementOptions {
   // stages; parameterization and lambda do not apply (the joints are the
   // parameters), nor do the quality fields.
   WeightedIcpOptions icp = DefaultIcp();
+  // Compute the standard deviations at the estimate returned (one more
+  // correspondence search and a dense SVD of 6 + joints parameters).
   bool covariance = true;
 
   static WeightedIcpOptions DefaultIcp();
