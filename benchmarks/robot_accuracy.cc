@@ -49,7 +49,7 @@ DEFINE_int32(base_alternatives, -1,
              "RobotFitOptions::base_alternatives (-1: the kind's default, FitOptionsFor).");
 DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICPs: joint_space or pose_penalty (Eq. 10 / 14).");
-DEFINE_string(refine_chain, "off",
+DEFINE_string(refine_chain, "on",
               "Fits: without (off) and/or with (on) the whole-chain refinement (--refine_chain).");
 DEFINE_int32(max_chain_samples, -1, "RobotFitOptions::max_chain_samples (-1: the default).");
 DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (edge fits).");

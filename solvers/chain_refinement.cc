@@ -1,8 +1,10 @@
 #include "solvers/chain_refinement.h"
 
 #include <ceres/ceres.h>
+#include <ceres/crs_matrix.h>
 #include <glog/logging.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -154,6 +156,27 @@ void Covariance(double cost, ChainProblem* chain, ChainRefinementSummary* summar
   if (residuals <= parameters) return;
   summary->sigma = std::sqrt(2.0 * cost / static_cast<double>(residuals - parameters));
   const double variance = summary->sigma * summary->sigma;
+  // A joint or base direction the residuals do not pin (a link seen by no
+  // scanner) makes J^T J singular: its deviation is undetermined. Checked
+  // here (eigenvalues of J^T J below 1e-12 of the largest, singular values of
+  // J below 1e-6) so that ceres::Covariance is only asked when it can answer
+  // (it logs an error otherwise).
+  ceres::CRSMatrix jacobian;
+  chain->problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &jacobian);
+  Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(jacobian.num_cols, jacobian.num_cols);
+  for (int row = 0; row < jacobian.num_rows; ++row) {
+    const int begin = jacobian.rows[static_cast<size_t>(row)];
+    const int end = jacobian.rows[static_cast<size_t>(row) + 1];
+    for (int a = begin; a < end; ++a) {
+      for (int b = begin; b < end; ++b) {
+        JtJ(jacobian.cols[static_cast<size_t>(a)], jacobian.cols[static_cast<size_t>(b)]) +=
+            jacobian.values[static_cast<size_t>(a)] * jacobian.values[static_cast<size_t>(b)];
+      }
+    }
+  }
+  const Eigen::VectorXd eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(JtJ, Eigen::EigenvaluesOnly).eigenvalues();
+  if (!(eigenvalues.minCoeff() > 1e-12 * eigenvalues.maxCoeff())) return;
   ceres::Covariance::Options covariance_options;
   covariance_options.algorithm_type = ceres::DENSE_SVD;
   covariance_options.num_threads = 1;

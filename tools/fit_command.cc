@@ -42,9 +42,10 @@ DEFINE_double(lambda, 1.0,
 DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICP: joint_space (1 parameter) or pose_penalty "
               "(the paper's 6-DoF pose + Eq. (10) penalties, then projection).");
-DEFINE_bool(refine_chain, false,
+DEFINE_bool(refine_chain, true,
             "After the sequential fit, refine the base pose and every joint together in one "
-            "Ceres problem (solvers/chain_refinement.h).");
+            "Ceres problem (solvers/chain_refinement.h); --norefine_chain: the sequential fit "
+            "alone.");
 DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
@@ -365,7 +366,7 @@ Command FitCommand() {
       "  edgefit fit --urdf=F [--attach=eef.urdf@link] --scan=F[,F...] --out=result.json\n"
       "              [--kind=auto|articulated|conveyance]\n"
       "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
-      "              [--parameterization=joint_space|pose_penalty] [--refine_chain]\n"
+      "              [--parameterization=joint_space|pose_penalty] [--norefine_chain]\n"
       "              [--init=x,y,yaw_deg]\n"
       "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
       "              [--out_ply=M.ply] [--out_background=B.ptx] [--background_distance_mm=8]\n"

@@ -153,6 +153,28 @@ TEST(ChainRefinementTest, CovarianceAloneKeepsTheEstimate) {
   EXPECT_TRUE(std::isfinite(summary.base_translation_std.norm()));
 }
 
+TEST(ChainRefinementTest, AJointNoSamplePinsHasNoDeviation) {
+  const RobotScene& s = GetScene();
+  std::vector<SurfaceSamples> samples = s.samples;
+  for (const int l : {s.model.LinkIndex("link_6"), s.model.LinkIndex("tool0")}) {
+    if (l >= 0) samples[static_cast<size_t>(l)] = SurfaceSamples();
+  }
+  Pose T_world_base = s.T_world_base;
+  std::vector<double> q = s.q;
+  CorrespondenceSearch search(&s.scans, nullptr);
+  ChainRefinementOptions options;
+  options.refine = false;
+  ChainRefinementSummary summary;
+  const std::vector<bool> point_to_point(s.model.links().size(), false);
+  ASSERT_TRUE(RefineChain(s.model, s.scans, &search, samples, point_to_point, options,
+                          &T_world_base, &q, &summary)
+                  .ok());
+  // joint_6 moves nothing that has samples: J^T J is singular, and no
+  // deviation is made up for it (or for any other joint).
+  EXPECT_FALSE(summary.covariance_ok);
+  for (const double std : summary.joint_std) EXPECT_TRUE(std::isnan(std));
+}
+
 TEST(ChainRefinementTest, RejectsSamplesThatDoNotMatchTheModel) {
   const RobotScene& s = GetScene();
   Pose T_world_base = s.T_world_base;
