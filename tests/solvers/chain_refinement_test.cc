@@ -60,6 +60,23 @@ const RobotScene& GetScene() {
   return *scene;
 }
 
+// RefineChain on the scene from (*T_world_base, *q) with the given samples
+// (every link point-to-plane).
+Status Refine(const std::vector<SurfaceSamples>& samples, const ChainRefinementOptions& options,
+              Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary) {
+  const RobotScene& s = GetScene();
+  CorrespondenceSearch search(&s.scans, nullptr);
+  const std::vector<bool> point_to_point(samples.size(), false);
+  return RefineChain(s.model, s.scans, &search, samples, point_to_point, options, T_world_base, q,
+                     summary);
+}
+
+ChainRefinementOptions CovarianceOnly() {
+  ChainRefinementOptions options;
+  options.refine = false;
+  return options;
+}
+
 TEST(ChainKinematicsTest, DerivativesAreTheTwistsOfBaseAndJoints) {
   const RobotScene& s = GetScene();
   ChainKinematics kinematics(&s.model, s.T_world_base, s.q);
@@ -98,11 +115,8 @@ TEST(ChainRefinementTest, BringsBaseAndEveryJointBackTogether) {
     q[static_cast<size_t>(j)] += sign * 0.3 * kDeg;
     sign = -sign;
   }
-  CorrespondenceSearch search(&s.scans, nullptr);
   ChainRefinementSummary summary;
-  const std::vector<bool> point_to_point(s.model.links().size(), false);
-  const Status status = RefineChain(s.model, s.scans, &search, s.samples, point_to_point,
-                                    ChainRefinementOptions(), &T_world_base, &q, &summary);
+  const Status status = Refine(s.samples, ChainRefinementOptions(), &T_world_base, &q, &summary);
   ASSERT_TRUE(status.ok()) << status.message();
   EXPECT_EQ(summary.stop_reason, IcpStopReason::kConverged);
   const Pose error = s.T_world_base.inverse() * T_world_base;
@@ -138,14 +152,8 @@ TEST(ChainRefinementTest, CovarianceAloneKeepsTheEstimate) {
   const RobotScene& s = GetScene();
   Pose T_world_base = s.T_world_base;
   std::vector<double> q = s.q;
-  CorrespondenceSearch search(&s.scans, nullptr);
-  ChainRefinementOptions options;
-  options.refine = false;
   ChainRefinementSummary summary;
-  const std::vector<bool> point_to_point(s.model.links().size(), false);
-  ASSERT_TRUE(RefineChain(s.model, s.scans, &search, s.samples, point_to_point, options,
-                          &T_world_base, &q, &summary)
-                  .ok());
+  ASSERT_TRUE(Refine(s.samples, CovarianceOnly(), &T_world_base, &q, &summary).ok());
   EXPECT_EQ(summary.iterations, 0);
   EXPECT_LT((T_world_base.matrix() - s.T_world_base.matrix()).norm(), 1e-12);
   for (size_t k = 0; k < q.size(); ++k) EXPECT_NEAR(q[k], s.q[k], 1e-9);
@@ -161,14 +169,8 @@ TEST(ChainRefinementTest, AJointNoSamplePinsHasNoDeviation) {
   }
   Pose T_world_base = s.T_world_base;
   std::vector<double> q = s.q;
-  CorrespondenceSearch search(&s.scans, nullptr);
-  ChainRefinementOptions options;
-  options.refine = false;
   ChainRefinementSummary summary;
-  const std::vector<bool> point_to_point(s.model.links().size(), false);
-  ASSERT_TRUE(RefineChain(s.model, s.scans, &search, samples, point_to_point, options,
-                          &T_world_base, &q, &summary)
-                  .ok());
+  ASSERT_TRUE(Refine(samples, CovarianceOnly(), &T_world_base, &q, &summary).ok());
   // joint_6 moves nothing that has samples: J^T J is singular, and no
   // deviation is made up for it (or for any other joint).
   EXPECT_FALSE(summary.covariance_ok);
@@ -179,12 +181,9 @@ TEST(ChainRefinementTest, RejectsSamplesThatDoNotMatchTheModel) {
   const RobotScene& s = GetScene();
   Pose T_world_base = s.T_world_base;
   std::vector<double> q = s.q;
-  CorrespondenceSearch search(&s.scans, nullptr);
   ChainRefinementSummary summary;
   const std::vector<SurfaceSamples> too_few(1);
-  const std::vector<bool> point_to_point(1, false);
-  const Status status = RefineChain(s.model, s.scans, &search, too_few, point_to_point,
-                                    ChainRefinementOptions(), &T_world_base, &q, &summary);
+  const Status status = Refine(too_few, ChainRefinementOptions(), &T_world_base, &q, &summary);
   EXPECT_FALSE(status.ok());
   EXPECT_NE(status.message().find("do not match the model"), std::string::npos);
 }
