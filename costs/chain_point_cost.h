@@ -18,8 +18,10 @@
 // n_world is fixed for the solve (the CAD sample's normal posed at the start
 // of the ICP iteration, as in point_to_plane_cost.h).
 //
-// Parameter blocks: delta_base[6] (rotation vector [rad], translation [m]),
-// and, when the model has independent joints, q[n] ([rad] or [m]).
+// Residuals: one per sample (plane) or three (point); a block may hold
+// several samples of one link (ChainPointCost). Parameter blocks:
+// delta_base[6] (rotation vector [rad], translation [m]), and, when the
+// model has independent joints, q[n] ([rad] or [m]).
 #ifndef EDGEFIT_COSTS_CHAIN_POINT_COST_H_
 #define EDGEFIT_COSTS_CHAIN_POINT_COST_H_
 
@@ -28,6 +30,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace edgefit {
@@ -49,21 +52,35 @@ class LinkPoseSource {
   virtual int num_joints() const = 0;
 };
 
+// One sample's data: p_link (link frame), its scan point q_world, the
+// plane normal n_world (unit; zero for the point-to-point residual) and
+// w_edge.
+struct ChainPoint {
+  Eigen::Vector3d p_link = Eigen::Vector3d::Zero();
+  Eigen::Vector3d q_world = Eigen::Vector3d::Zero();
+  Eigen::Vector3d n_world = Eigen::Vector3d::Zero();
+  double w_edge = 1.0;
+};
+
+// The residuals of one or more samples of one link, all point-to-plane or
+// all point-to-point. Under the trivial loss, samples of a link share one
+// block (the sum of squares is the same, Ceres' per-block overhead is
+// not); a robust loss needs one sample per block.
 class ChainPointCost final : public ceres::CostFunction {
  public:
-  // n_world: unit plane normal, or nullptr for the point-to-point residual.
-  ChainPointCost(LinkPoseSource* poses, int link, const Eigen::Vector3d& p_link,
-                 const Eigen::Vector3d& q_world, const Eigen::Vector3d* n_world, double w_edge)
-      : poses_(poses),
-        link_(link),
-        p_link_(p_link),
-        q_world_(q_world),
-        plane_(n_world != nullptr),
-        n_world_(plane_ ? n_world->normalized() : Eigen::Vector3d::Zero()),
-        sqrt_weight_(std::sqrt(w_edge)) {
+  ChainPointCost(LinkPoseSource* poses, int link, bool plane, std::vector<ChainPoint> points)
+      : poses_(poses), link_(link), plane_(plane), points_(std::move(points)) {
     CHECK(poses != nullptr);
-    CHECK_GE(w_edge, 0.0);
-    set_num_residuals(plane_ ? 1 : 3);
+    CHECK(!points_.empty());
+    for (ChainPoint& point : points_) {
+      CHECK_GE(point.w_edge, 0.0);
+      if (plane_) {
+        CHECK_GT(point.n_world.norm(), 0.0) << "normal must be non-zero";
+        point.n_world.normalize();
+      }
+      point.w_edge = std::sqrt(point.w_edge);  // kept as sqrt(w_edge) from here on
+    }
+    set_num_residuals(static_cast<int>(points_.size()) * (plane_ ? 1 : 3));
     mutable_parameter_block_sizes()->push_back(6);
     if (poses->num_joints() > 0) mutable_parameter_block_sizes()->push_back(poses->num_joints());
   }
@@ -73,25 +90,29 @@ class ChainPointCost final : public ceres::CostFunction {
     const int n = poses_->num_joints();
     const LinkPoseJacobian& pose =
         poses_->At(parameters[0], n > 0 ? parameters[1] : nullptr, link_);
-    const Eigen::Vector3d d = sqrt_weight_ * (pose.R * p_link_ + pose.t - q_world_);
-    if (plane_) {
-      residuals[0] = n_world_.dot(d);
-    } else {
-      for (int r = 0; r < 3; ++r) residuals[r] = d[r];
-    }
-    if (jacobians == nullptr) return true;
     const int rows = plane_ ? 1 : 3;
-    for (int block = 0; block < (n > 0 ? 2 : 1); ++block) {
-      if (jacobians[block] == nullptr) continue;
-      const int columns = block == 0 ? 6 : n;
-      const int first = block == 0 ? 0 : 6;
-      for (int k = 0; k < columns; ++k) {
-        const size_t i = static_cast<size_t>(first + k);
-        const Eigen::Vector3d dy = sqrt_weight_ * (pose.dR[i] * p_link_ + pose.dt[i]);
-        if (plane_) {
-          jacobians[block][k] = n_world_.dot(dy);
-        } else {
-          for (int r = 0; r < rows; ++r) jacobians[block][r * columns + k] = dy[r];
+    for (size_t s = 0; s < points_.size(); ++s) {
+      const ChainPoint& point = points_[s];
+      const int row = static_cast<int>(s) * rows;
+      const Eigen::Vector3d d = point.w_edge * (pose.R * point.p_link + pose.t - point.q_world);
+      if (plane_) {
+        residuals[row] = point.n_world.dot(d);
+      } else {
+        for (int r = 0; r < 3; ++r) residuals[row + r] = d[r];
+      }
+      if (jacobians == nullptr) continue;
+      for (int block = 0; block < (n > 0 ? 2 : 1); ++block) {
+        if (jacobians[block] == nullptr) continue;
+        const int columns = block == 0 ? 6 : n;
+        const int first = block == 0 ? 0 : 6;
+        for (int k = 0; k < columns; ++k) {
+          const size_t i = static_cast<size_t>(first + k);
+          const Eigen::Vector3d dy = point.w_edge * (pose.dR[i] * point.p_link + pose.dt[i]);
+          if (plane_) {
+            jacobians[block][row * columns + k] = point.n_world.dot(dy);
+          } else {
+            for (int r = 0; r < 3; ++r) jacobians[block][(row + r) * columns + k] = dy[r];
+          }
         }
       }
     }
@@ -101,11 +122,8 @@ class ChainPointCost final : public ceres::CostFunction {
  private:
   LinkPoseSource* poses_;  // borrowed
   const int link_;
-  const Eigen::Vector3d p_link_;
-  const Eigen::Vector3d q_world_;
   const bool plane_;
-  const Eigen::Vector3d n_world_;
-  const double sqrt_weight_;
+  std::vector<ChainPoint> points_;  // w_edge holds sqrt(w_edge)
 };
 
 }  // namespace edgefit

@@ -9,6 +9,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
 #include "costs/chain_point_cost.h"
@@ -50,25 +51,36 @@ void SelectAndPose(const std::vector<SurfaceSamples>& link_samples,
                    const std::vector<Pose>& T_world_link, const ScanVisibility& visibility,
                    WeightedIcpOptions::Visibility mode, double gate, PosedSamples* out) {
   *out = PosedSamples();
+  std::vector<uint8_t> seen;
   for (size_t l = 0; l < link_samples.size(); ++l) {
     const SurfaceSamples& samples = link_samples[l];
+    const int count = static_cast<int>(samples.points.size());
     const bool has_normals = samples.normals.size() == samples.points.size();
+    const bool test = has_normals && mode != WeightedIcpOptions::Visibility::kAll;
     const Eigen::Matrix3d R = T_world_link[l].linear();
     const Eigen::Vector3d& t = T_world_link[l].translation();
-    for (size_t i = 0; i < samples.points.size(); ++i) {
-      const Eigen::Vector3d p = samples.points[i].cast<double>();
-      const Eigen::Vector3d q = R * p + t;
-      const Eigen::Vector3d n = has_normals ? Eigen::Vector3d(R * samples.normals[i].cast<double>())
-                                            : Eigen::Vector3d::Zero();
-      if (has_normals && mode != WeightedIcpOptions::Visibility::kAll &&
-          visibility.BestView(q, n, gate, mode == WeightedIcpOptions::Visibility::kFacing) !=
-              ScanView::kSeen) {
-        continue;
+    // The visibility test in parallel, the samples kept in their order:
+    // the same selection for any thread count.
+    seen.assign(static_cast<size_t>(count), 1);
+    if (test) {
+#pragma omp parallel for schedule(static)
+      for (int i = 0; i < count; ++i) {
+        const size_t k = static_cast<size_t>(i);
+        const Eigen::Vector3d q = R * samples.points[k].cast<double>() + t;
+        const Eigen::Vector3d n = R * samples.normals[k].cast<double>();
+        seen[k] =
+            visibility.BestView(q, n, gate, mode == WeightedIcpOptions::Visibility::kFacing) ==
+            ScanView::kSeen;
       }
+    }
+    for (size_t i = 0; i < samples.points.size(); ++i) {
+      if (!seen[i]) continue;
+      const Eigen::Vector3d p = samples.points[i].cast<double>();
       out->link.push_back(static_cast<int>(l));
       out->p_link.push_back(p);
-      out->n_world.push_back(n);
-      out->q_world.push_back(q.cast<float>());
+      out->n_world.push_back(has_normals ? Eigen::Vector3d(R * samples.normals[i].cast<double>())
+                                         : Eigen::Vector3d::Zero());
+      out->q_world.push_back((R * p + t).cast<float>());
     }
   }
 }
@@ -95,22 +107,40 @@ struct ChainProblem {
     for (size_t k = 0; k < independent.size(); ++k) {
       q_independent[k] = q_full[static_cast<size_t>(independent[k])];
     }
-    for (const Correspondence& m : correspondences) {
-      const size_t k = static_cast<size_t>(m.source);
-      const int link = posed.link[k];
-      const Eigen::Vector3d target =
-          scans.scans[static_cast<size_t>(m.scan)].PointWorld(static_cast<size_t>(m.cell));
-      const bool plane = icp.point_to_plane && !point_to_point[static_cast<size_t>(link)] &&
-                         posed.n_world[k].squaredNorm() > 0.0;
-      const double w_edge = icp.uniform_weights ? 1.0 : static_cast<double>(m.weight);
-      auto* cost = new ChainPointCost(&kinematics, link, posed.p_link[k], target,
-                                      plane ? &posed.n_world[k] : nullptr, w_edge);
+    // Consecutive correspondences of one link and residual kind share a
+    // block of up to kBatch samples under the trivial loss.
+    constexpr size_t kBatch = 256;
+    const size_t batch = icp.loss == "trivial" ? kBatch : 1;
+    std::vector<ChainPoint> points;
+    int points_link = -1;
+    bool points_plane = false;
+    auto flush = [&]() {
+      if (points.empty()) return;
+      auto* cost = new ChainPointCost(&kinematics, points_link, points_plane, std::move(points));
+      points.clear();
       if (independent.empty()) {
         problem.AddResidualBlock(cost, loss, delta_base);
       } else {
         problem.AddResidualBlock(cost, loss, delta_base, q_independent.data());
       }
+    };
+    for (const Correspondence& m : correspondences) {
+      const size_t k = static_cast<size_t>(m.source);
+      const int link = posed.link[k];
+      const bool plane = icp.point_to_plane && !point_to_point[static_cast<size_t>(link)] &&
+                         posed.n_world[k].squaredNorm() > 0.0;
+      if (link != points_link || plane != points_plane || points.size() >= batch) flush();
+      points_link = link;
+      points_plane = plane;
+      ChainPoint point;
+      point.p_link = posed.p_link[k];
+      point.q_world =
+          scans.scans[static_cast<size_t>(m.scan)].PointWorld(static_cast<size_t>(m.cell));
+      if (plane) point.n_world = posed.n_world[k];
+      point.w_edge = icp.uniform_weights ? 1.0 : static_cast<double>(m.weight);
+      points.push_back(point);
     }
+    flush();
   }
   bool has_joints() const { return !kinematics.independent_joints().empty(); }
 
@@ -311,7 +341,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
     search->Find(posed.q_world, crop_world, gated, &correspondences);
     ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, point_to_point, icp,
                        loss.get());
-    summary->residual_blocks = correspondences.size();
+    summary->correspondences = correspondences.size();
     double cost = 0.0;
     chain.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
     if (!options.refine) summary->final_cost = cost;

@@ -57,7 +57,7 @@ struct ChainRefinementOptions {
 struct ChainRefinementSummary {
   int iterations = 0;  // Ceres solves done
   IcpStopReason stop_reason = IcpStopReason::kMaxIterations;
-  size_t residual_blocks = 0;  // correspondences of the last iteration
+  size_t correspondences = 0;  // at the estimate returned, final gate
   double final_cost = 0.0;     // Ceres cost at the estimate returned
   // Largest distance any sample moved from the sequential fit's estimate [m].
   double max_displacement = 0.0;

@@ -241,7 +241,7 @@ int RunFit(const Command& command) {
                      {"iterations", chain.iterations},
                      {"stop_reason", IcpStopReasonName(chain.stop_reason)},
                      {"max_displacement_m", chain.max_displacement},
-                     {"residual_blocks", chain.residual_blocks},
+                     {"correspondences", chain.correspondences},
                      {"sigma_m", chain.sigma},
                      {"covariance_ok", chain.covariance_ok}}}}},
                  {"options",
