@@ -92,7 +92,7 @@ struct RobotFitOptions {
   // at 3 mm with accessories it lowered the revolute errors of every robot
   // measured (bundled 23 fits: mean 0.0081 -> 0.0035 deg; KUKA, ABB, FANUC
   // with the X16005 gun, 5 each: 0.0305 -> 0.0086, 0.0116 -> 0.0078,
-  // 0.0128 -> 0.0080 deg) and the conveyor's (0.062 -> 0.049 mm), for 1-2 s.
+  // 0.0128 -> 0.0080 deg) and the conveyor's (0.062 -> 0.049 mm), for about 1 s on 6 M points.
   // The covariance of the joints is computed either way (chain_refinement.
   // covariance) at the final estimate, with at most max_chain_samples per
   // body: on the bundled robot 30000 halved the revolute errors; 5000
