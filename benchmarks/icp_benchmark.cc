@@ -1,4 +1,4 @@
-// Weighted ICP engine (solvers/weighted_icp.h) on the ~5 M point virtual scan
+// Weighted ICP engine (solvers/registration/weighted_icp.h) on the ~5 M point virtual scan
 // of the bundled robot (bundled_robot_scan.h: posture "home", 3 scanners,
 // 1 mm noise) with the edge detector's weights:
 //   - one ICP iteration (visibility test, lattice correspondences, one Ceres
@@ -19,7 +19,7 @@
 #include "bundled_robot_scan.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/surface_sampler.h"
-#include "solvers/weighted_icp.h"
+#include "solvers/registration/weighted_icp.h"
 
 namespace edgefit {
 namespace {
@@ -77,10 +77,11 @@ void BM_IcpIteration(benchmark::State& state) {
           : LinkMotion::FromJoint(j, f.T_world_link[static_cast<size_t>(j.parent_link)]);
   WeightedIcpOptions options;
   options.max_iterations = 1;
-  options.parameterization = state.range(0) == 2 ? JointParameterization::kPoseWithPenalties
-                                                 : JointParameterization::kJointSpace;
+  ResidualOptions residuals;
+  residuals.parameterization = state.range(0) == 2 ? JointParameterization::kPoseWithPenalties
+                                                   : JointParameterization::kJointSpace;
   CorrespondenceSearch search(&f.robot.scans, &f.edges.w_edge);
-  WeightedIcp icp(&f.robot.scans, &search);
+  WeightedIcp icp(&f.robot.scans, &search, nullptr, residuals);
   WeightedIcpSummary summary;
   for (auto _ : state) {
     LinkState s;
@@ -107,12 +108,13 @@ void BM_FitMainJoints(benchmark::State& state) {
   sampling.spacing = 0.003;
   const std::vector<SurfaceSamples> samples = SampleModelSurfaces(model, sampling);
   WeightedIcpOptions options;
-  options.parameterization = state.range(0) == 0 ? JointParameterization::kJointSpace
-                                                 : JointParameterization::kPoseWithPenalties;
+  ResidualOptions residuals;
+  residuals.parameterization = state.range(0) == 0 ? JointParameterization::kJointSpace
+                                                   : JointParameterization::kPoseWithPenalties;
   options.correspondence.max_distance = 0.03;
   options.max_iterations = 60;
   CorrespondenceSearch search(&f.robot.scans, &f.edges.w_edge);
-  WeightedIcp icp(&f.robot.scans, &search);
+  WeightedIcp icp(&f.robot.scans, &search, nullptr, residuals);
   std::vector<double> errors;
   std::vector<double> joint_error(model.joints().size(), 0.0);  // mean of the two starts
   int iterations = 0;

@@ -30,11 +30,11 @@
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/pipeline/bench_case.h"
-#include "edgefit/pipeline/fit_errors.h"
-#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/bench/bench_case.h"
+#include "edgefit/bench/fit_errors.h"
+#include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/truth.h"
 
@@ -46,12 +46,12 @@ DEFINE_string(accessories, "without,with", "Scenes: without and/or with accessor
 DEFINE_string(weighting, "edge,uniform", "Fits: edge and/or uniform weights.");
 DEFINE_string(kind, "auto", "auto | articulated | conveyance (edgefit fit --kind).");
 DEFINE_int32(base_alternatives, -1,
-             "RobotFitOptions::base_alternatives (-1: the kind's default, FitOptionsFor).");
+             "BaseHypothesesOptions::alternatives (-1: the kind's default, FitOptionsFor).");
 DEFINE_string(parameterization, "joint_space",
               "Joint constraint of the precise ICPs: joint_space or pose_penalty (Eq. 10 / 14).");
 DEFINE_string(refine_chain, "on",
               "Fits: without (off) and/or with (on) the whole-chain refinement (--refine_chain).");
-DEFINE_int32(max_chain_samples, -1, "RobotFitOptions::max_chain_samples (-1: the default).");
+DEFINE_int32(max_chain_samples, -1, "CadSampleOptions::max_chain_samples (-1: the default).");
 DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (edge fits).");
 DEFINE_string(icp_visibility, "seen",
               "Which CAD samples the ICPs use (WeightedIcpOptions::visibility): seen (facing a "
@@ -74,7 +74,7 @@ using Case = BenchCase;
 struct FitRecord {
   std::string case_name;
   FitErrors errors;
-  RobotFitTimings timings;
+  FitTimings timings;
   size_t points = 0;
   bool quality_ok = false;
   bool failed = false;
@@ -251,18 +251,19 @@ int Run() {
       CHECK(status.ok()) << status.message();
       for (const auto& [weighting, refine] : configs) {
         const std::string config = refine ? weighting + ", refine_chain" : weighting;
-        RobotFitOptions options = FitOptionsFor(kind);
-        options.refine_chain = refine;
-        if (FLAGS_max_chain_samples > 0) options.max_chain_samples = FLAGS_max_chain_samples;
+        FitOptions options = FitOptionsFor(kind);
+        options.refinement.chain.refine = refine;
+        if (FLAGS_max_chain_samples > 0) options.samples.max_chain_samples = FLAGS_max_chain_samples;
         options.uniform_weights = weighting == "uniform";
         options.edges.w_high = FLAGS_w_high;
         status =
-            ParseJointParameterization(FLAGS_parameterization, &options.joint_icp.parameterization);
+            ParseJointParameterization(FLAGS_parameterization, &options.residuals.parameterization);
         CHECK(status.ok()) << status.message();
-        options.subtree_icp.parameterization = options.joint_icp.parameterization;
-        if (FLAGS_base_alternatives >= 0) options.base_alternatives = FLAGS_base_alternatives;
-        options.base_icp.visibility = options.joint_icp.visibility =
-            options.subtree_icp.visibility = IcpVisibility(FLAGS_icp_visibility);
+        if (FLAGS_base_alternatives >= 0) {
+          options.base.hypotheses.alternatives = FLAGS_base_alternatives;
+        }
+        options.base.icp.visibility = options.chain.joint_icp.visibility =
+            options.chain.subtree_icp.visibility = IcpVisibility(FLAGS_icp_visibility);
         ProgressFn progress;
         if (FLAGS_progress)
           progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };

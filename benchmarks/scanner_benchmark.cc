@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "edgefit/model/primitive_meshes.h"
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"

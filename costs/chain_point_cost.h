@@ -12,7 +12,7 @@
 //
 // The kinematic constraints are exact: the links can only move as the joints
 // let them. The pose of a link and its derivatives d(R, t)/dx_k come from a
-// LinkPoseSource (solvers/chain_kinematics.h), which evaluates the chain once
+// LinkPoseSource (solvers/refinement/chain_kinematics.h), which evaluates the chain once
 // per parameter vector for all residuals; the Jacobian of a residual is then
 //   dr/dx_k = sqrt(w_edge) [n^T] (dR_k p_link + dt_k).
 // n_world is fixed for the solve (the CAD sample's normal posed at the start
@@ -46,9 +46,11 @@ struct LinkPoseJacobian {
 class LinkPoseSource {
  public:
   virtual ~LinkPoseSource() = default;
-  // The pose of `link` at parameters (delta_base[6], q[num_joints]), with
-  // its derivatives; valid until the next call with other parameters.
-  virtual const LinkPoseJacobian& At(const double* delta_base, const double* q, int link) = 0;
+  // The pose of `link` at the problem's current parameters (delta_base[6],
+  // q[num_joints]), with its derivatives: computed once per evaluation
+  // point, before the residual blocks are evaluated (a
+  // ceres::EvaluationCallback of the problem, chain_kinematics.h).
+  virtual const LinkPoseJacobian& At(int link) const = 0;
   virtual int num_joints() const = 0;
 };
 
@@ -68,7 +70,7 @@ struct ChainPoint {
 // not); a robust loss needs one sample per block.
 class ChainPointCost final : public ceres::CostFunction {
  public:
-  ChainPointCost(LinkPoseSource* poses, int link, bool plane, std::vector<ChainPoint> points)
+  ChainPointCost(const LinkPoseSource* poses, int link, bool plane, std::vector<ChainPoint> points)
       : poses_(poses), link_(link), plane_(plane), points_(std::move(points)) {
     CHECK(poses != nullptr);
     CHECK(!points_.empty());
@@ -88,8 +90,8 @@ class ChainPointCost final : public ceres::CostFunction {
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
     const int n = poses_->num_joints();
-    const LinkPoseJacobian& pose =
-        poses_->At(parameters[0], n > 0 ? parameters[1] : nullptr, link_);
+    (void)parameters;  // the poses at them come from poses_ (see LinkPoseSource)
+    const LinkPoseJacobian& pose = poses_->At(link_);
     const int rows = plane_ ? 1 : 3;
     for (size_t s = 0; s < points_.size(); ++s) {
       const ChainPoint& point = points_[s];
@@ -120,7 +122,7 @@ class ChainPointCost final : public ceres::CostFunction {
   }
 
  private:
-  LinkPoseSource* poses_;  // borrowed
+  const LinkPoseSource* poses_;  // borrowed
   const int link_;
   const bool plane_;
   std::vector<ChainPoint> points_;  // w_edge holds sqrt(w_edge)

@@ -2,20 +2,15 @@
 # against the ground truth, thread-count determinism, a scan without the robot.
 edgefit_add_test(pipeline_test SINGLE_PROCESS
   SOURCES pipeline/robot_fit_test.cc
-  LIBS edgefit::pipeline edgefit::scanner edgefit::scene edgefit::model glog::glog
+  LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::scene edgefit::model glog::glog
        OpenMP::OpenMP_CXX)
-# The body helpers (internal header): symmetry test, round part, posing.
-edgefit_add_test(robot_bodies_test
-  SOURCES pipeline/robot_bodies_test.cc
-  LIBS edgefit::pipeline edgefit::model)
-target_include_directories(robot_bodies_test PRIVATE ${PROJECT_SOURCE_DIR}/src/pipeline)
 # The conveyance pipeline (paper Sec. 6) on a small virtual scan of the
 # bundled conveyor; --kind=auto.
 edgefit_add_test(conveyance_fit_test SINGLE_PROCESS
   SOURCES pipeline/conveyance_fit_test.cc
-  LIBS edgefit::pipeline edgefit::scanner edgefit::model glog::glog)
+  LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)
 # A robot on a linear track (../shared/robots; skips without it): the rail
 # as the base, the carriage a prismatic joint.
 edgefit_add_test(linear_track_fit_test SINGLE_PROCESS
   SOURCES pipeline/linear_track_fit_test.cc
-  LIBS edgefit::pipeline edgefit::scanner edgefit::model)
+  LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model)

@@ -29,11 +29,12 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
+#include "fit_flags.h"
 #include "costs/robust_loss.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/pipeline/bench_case.h"
+#include "edgefit/bench/bench_case.h"
 
 DEFINE_string(assets, "robot,conveyor", "Bench: robot and/or conveyor.");
 DEFINE_string(robot_urdf, "assets/robot/robot.urdf", "Bench: the robot's URDF.");
@@ -68,15 +69,6 @@ DEFINE_int32(repeats, 1,
              "Bench: each scene with seeds seed .. seed+repeats-1 (other base poses, scans and "
              "fit seeds).");
 DEFINE_string(out_csv, "", "Bench: optional CSV, one line per fitted joint.");
-DECLARE_string(out_json);  // edges_command.cc; bench: the JSON of every run
-DECLARE_double(spacing_mm);
-DECLARE_double(noise_mm);
-DECLARE_int32(scanners);
-DECLARE_double(lambda);  // fit_command.cc
-DECLARE_string(loss);
-DECLARE_double(loss_scale_mm);
-DECLARE_string(parameterization);
-DECLARE_bool(refine_chain);
 
 namespace edgefit::tools {
 namespace {
@@ -138,23 +130,21 @@ std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& f
   return label.empty() ? "-" : label;
 }
 
-RobotFitOptions OptionsFor(AssetKind kind, const FitSetting& fit, uint64_t seed,
-                           JointParameterization parameterization) {
-  RobotFitOptions options = FitOptionsFor(kind);
-  options.uniform_weights = fit.weighting == "uniform";
-  options.edges.w_high = fit.w_high;
-  options.seed = seed;
-  for (WeightedIcpOptions* icp : {&options.base_icp, &options.joint_icp, &options.subtree_icp,
-                                  &options.chain_refinement.icp}) {
-    icp->loss = fit.loss;
-    icp->loss_scale = FLAGS_loss_scale_mm * 1e-3;
-    icp->lambda = fit.lambda;
+// The fit flags' options (fit_flags.h) with the setting's axes over them.
+Status OptionsFor(AssetKind kind, const FitSetting& fit, uint64_t seed, FitOptions* options) {
+  EDGEFIT_RETURN_IF_ERROR(FitOptionsFromFlags(kind, options));
+  options->uniform_weights = fit.weighting == "uniform";
+  options->edges.w_high = fit.w_high;
+  options->seed = seed;
+  options->residuals.loss = fit.loss;
+  options->residuals.lambda = fit.lambda;
+  for (WeightedIcpOptions* icp : {&options->base.icp, &options->chain.joint_icp,
+                                  &options->chain.subtree_icp, &options->refinement.chain.icp}) {
     icp->correspondence.use_lattice = fit.search == "lattice";
   }
-  options.joint_icp.parameterization = options.subtree_icp.parameterization = parameterization;
-  options.sweep.revolute_step = fit.sweep_step_deg * kDeg;
-  options.refine_chain = fit.refine_chain;
-  return options;
+  options->chain.sweep.revolute_step = fit.sweep_step_deg * kDeg;
+  options->refinement.chain.refine = fit.refine_chain;
+  return Status::Ok();
 }
 
 // Parses a comma list of numbers; an empty list gives `fallback`.
@@ -269,7 +259,7 @@ nlohmann::json RunJson(const Run& run) {
     joints[e.name] = e.error;
     if (e.prismatic) prismatic.push_back(e.name);
   }
-  const RobotFitTimings& t = run.result.timings;
+  const FitTimings& t = run.result.timings;
   return {{"asset", run.asset},
           {"posture", run.posture},
           {"accessories", run.scan.accessories},
@@ -345,6 +335,7 @@ int RunBench(const Command& command) {
   for (const std::string& r : refines) {
     if (r != "on" && r != "off") return BadInput(command, "--refine_chains: off, on");
   }
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());
   JointParameterization parameterization = JointParameterization::kJointSpace;
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, ParseJointParameterization(FLAGS_parameterization, &parameterization));
@@ -428,10 +419,10 @@ int RunBench(const Command& command) {
               for (const FitSetting& fit : fits) {
                 Run run{asset, c.name, scan_setting, fit, Label(axes, scan_setting, fit), {}};
                 Progress("bench: " + scene + ", " + fit.weighting + " weights, " + run.label);
+                FitOptions options;
+                EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFor(kind, fit, seed, &options));
                 EDGEFIT_RETURN_IF_ERROR_EXIT(
-                    command,
-                    FitBenchCase(model, c, scan.scans,
-                                 OptionsFor(kind, fit, seed, parameterization), &run.result));
+                    command, FitBenchCase(model, c, scan.scans, options, &run.result));
                 runs.push_back(std::move(run));
               }
             }

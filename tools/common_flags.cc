@@ -24,3 +24,9 @@ DEFINE_string(out_ply, "",
               "Optional PLY output. edges: the valid points coloured by weight (red: w_high, "
               "orange: candidates dropped by region growing, grey: others); fit: the fitted "
               "model's meshes in the world frame.");
+DEFINE_string(out_json, "",
+              "Output JSON. edges: a summary (points, edge_points, timing_s, options); bench: "
+              "every run.");
+DEFINE_int32(scanners, 3, "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
+DEFINE_double(spacing_mm, 1.7, "Point spacing at the asset's distance [mm]; sets the angular step.");
+DEFINE_double(noise_mm, 1.0, "Gaussian range noise along the laser direction, sigma [mm].");

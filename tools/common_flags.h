@@ -16,5 +16,9 @@ DECLARE_string(labels);
 DECLARE_string(out);
 DECLARE_string(truth);
 DECLARE_string(out_ply);
+DECLARE_string(out_json);
+DECLARE_int32(scanners);
+DECLARE_double(spacing_mm);
+DECLARE_double(noise_mm);
 
 #endif  // EDGEFIT_TOOLS_COMMON_FLAGS_H_

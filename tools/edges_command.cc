@@ -21,7 +21,6 @@
 DEFINE_string(out_weights, "",
               "Output: one float32 w_edge per grid cell, scans in file order, each scan in its "
               "file's point order, 0 for missing cells.");
-DEFINE_string(out_json, "", "Output: JSON summary (points, edge_points, timing_s, options).");
 DEFINE_double(normal_radius_mm, 5.0, "Sec. 4.1: physical radius of the normal window [mm].");
 DEFINE_double(tau_align, 0.866, "Eq. (2): neighbours whose first normals agree, |n_k.n| > tau_align.");
 DEFINE_double(r_min_mm, 5.0, "Eq. (3): inner radius of the scoring annulus [mm].");

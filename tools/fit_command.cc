@@ -18,37 +18,19 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
+#include "fit_flags.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/calibrated_urdf.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/mesh_ply.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/pipeline/fit_errors.h"
+#include "edgefit/bench/fit_errors.h"
 #include "edgefit/pipeline/model_points.h"
-#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/pipeline/fit.h"
+#include "edgefit/pipeline/result_json.h"
 #include "edgefit/scanner/truth.h"
 
-DEFINE_string(kind, "auto",
-              "auto | articulated | conveyance: the pipeline (conveyance: the base's rough pose "
-              "from the arm tips, Sec. 6.1); auto takes a model whose joints are all prismatic "
-              "for a conveyance system.");
-DEFINE_string(weighting, "edge", "edge: Eq. (6) weights in every stage; uniform: all 1.");
-DEFINE_string(loss, "trivial",
-              "Loss of the precise ICP residuals: trivial, huber, cauchy, soft_l1, arctan, tukey.");
-DEFINE_double(loss_scale_mm, 5.0, "Scale of --loss [mm].");
-DEFINE_double(lambda, 1.0,
-              "Eq. (10)/(14) penalty weight relative to the data (pose_penalty only).");
-DEFINE_string(parameterization, "joint_space",
-              "Joint constraint of the precise ICP: joint_space (1 parameter) or pose_penalty "
-              "(the paper's 6-DoF pose + Eq. (10) penalties, then projection).");
-DEFINE_bool(refine_chain, true,
-            "After the sequential fit, refine the base pose and every joint together in one "
-            "Ceres problem (solvers/chain_refinement.h); --norefine_chain: the sequential fit "
-            "alone.");
-DEFINE_string(init, "",
-              "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
-              "scan's floor): skips the rough base stage. Never required.");
 DEFINE_string(out_joint_states, "",
               "Optional output: joint values as YAML, ROS joint_states "
               "layout (name, position).");
@@ -68,37 +50,6 @@ namespace {
 
 using nlohmann::json;
 
-Status OptionsFromFlags(RobotFitOptions* options) {
-  options->edges.w_high = FLAGS_w_high;
-  options->seed = FLAGS_seed;
-  if (FLAGS_weighting != "edge" && FLAGS_weighting != "uniform") {
-    return Status::Error("--weighting must be edge or uniform, not '" + FLAGS_weighting + "'");
-  }
-  options->uniform_weights = FLAGS_weighting == "uniform";
-  for (WeightedIcpOptions* icp : {&options->base_icp, &options->joint_icp, &options->subtree_icp}) {
-    icp->loss = FLAGS_loss;
-    icp->loss_scale = FLAGS_loss_scale_mm * 1e-3;
-    icp->lambda = FLAGS_lambda;
-  }
-  EDGEFIT_RETURN_IF_ERROR(
-      ParseJointParameterization(FLAGS_parameterization, &options->joint_icp.parameterization));
-  options->subtree_icp.parameterization = options->joint_icp.parameterization;
-  options->refine_chain = FLAGS_refine_chain;
-  options->chain_refinement.icp.loss = FLAGS_loss;
-  options->chain_refinement.icp.loss_scale = FLAGS_loss_scale_mm * 1e-3;
-  if (!(FLAGS_background_distance_mm > 0.0))
-    return Status::Error("--background_distance_mm must be > 0");
-  if (!FLAGS_init.empty()) {
-    options->has_initial_base = true;
-    double x = 0.0, y = 0.0, yaw = 0.0;
-    EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));
-    options->T_world_base_initial = PoseFromXyYaw(x, y, yaw);
-  }
-  std::string error;
-  if (!options->IsValid(&error)) return Status::Error(error);
-  return Status::Ok();
-}
-
 std::string JointStatesYaml(const KinematicModel& model, const std::vector<double>& q) {
   std::ostringstream names, positions;
   bool first = true;
@@ -114,37 +65,14 @@ std::string JointStatesYaml(const KinematicModel& model, const std::vector<doubl
          "]\nposition: [" + positions.str() + "]\nvelocity: []\neffort: []\n";
 }
 
-// quality.base_rough of result.json: the method that gave the rough pose
-// and what it found.
-json BaseRoughJson(const RobotFitResult& fit) {
-  if (fit.base_rough_method == RobotFitOptions::BaseRoughMethod::kArmTips) {
-    return {{"method", "arm_tips"},
-            {"floor_z", fit.arm_tips.floor_z},
-            {"scan_tips", fit.arm_tips.scan_tips.size()},
-            {"symmetric_scan_tips", fit.arm_tips.symmetric_scan_tips},
-            {"model_tips", fit.arm_tips.model_tips.size()},
-            {"matches", fit.arm_tips.matches},
-            {"poses_scored", fit.arm_tips.scored}};
-  }
-  return {{"method", "cross_sections"},
-          {"floor_z", fit.base_rough.floor_z},
-          {"scan_corners", fit.base_rough.scan_corners},
-          {"model_corners", fit.base_rough.model_corners},
-          {"hypotheses", fit.base_rough.hypotheses},
-          {"inlier_share", fit.base_rough.inlier_share}};
-}
-
 int RunFit(const Command& command) {
   if (FLAGS_urdf.empty()) return BadInput(command, "--urdf is required");
   if (FLAGS_scan.empty()) return BadInput(command, "--scan is required");
   if (FLAGS_out.empty()) return BadInput(command, "--out is required");
-  if (FLAGS_kind != "auto" && FLAGS_kind != "articulated" && FLAGS_kind != "conveyance") {
-    return BadInput(command, "--kind must be auto, articulated or conveyance");
+  if (!(FLAGS_background_distance_mm > 0.0)) {
+    return BadInput(command, "--background_distance_mm must be > 0");
   }
-  {  // the flags alone, before any file is read
-    RobotFitOptions options;
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFromFlags(&options));
-  }
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());  // before any file is read
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   const auto start = std::chrono::steady_clock::now();
 
@@ -155,8 +83,8 @@ int RunFit(const Command& command) {
       command, LoadModelWithAttachments(FLAGS_urdf, specs, ModelLoadOptions(), &model));
   AssetKind kind = AssetKind::kArticulated;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseAssetKind(FLAGS_kind, model, &kind));
-  RobotFitOptions options = FitOptionsFor(kind);
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFromFlags(&options));
+  FitOptions options;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitOptionsFromFlags(kind, &options));
   ScanSet scans;
   for (const std::string& path : SplitList(FLAGS_scan)) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
@@ -167,8 +95,8 @@ int RunFit(const Command& command) {
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  RobotFitResult fit;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitRobot(model, scans, options, &Progress, &fit));
+  FitResult fit;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, Fit(model, scans, options, &Progress, &fit));
   FitErrors errors;
   if (!FLAGS_truth.empty()) {
     const Status status =
@@ -176,83 +104,8 @@ int RunFit(const Command& command) {
     if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
   }
 
-  // result.json
-  const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
-  const Eigen::Vector3d xyz = fit.T_world_base.translation();
-  json joints = json::object();
-  for (size_t j = 0; j < model.joints().size(); ++j) {
-    if (model.joints()[j].IsMoving()) joints[model.joints()[j].name] = fit.q[j];
-  }
-  // Standard deviations from the covariance (solvers/chain_refinement.h:
-  // lower bounds), null where not determined.
-  const ChainRefinementSummary& chain = fit.chain_refinement;
-  auto number_or_null = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
-  json joint_std = json::object();
-  for (size_t j = 0; j < model.joints().size(); ++j) {
-    if (model.joints()[j].IsIndependent()) {
-      joint_std[model.joints()[j].name] = number_or_null(chain.joint_std[j]);
-    }
-  }
-  json base_std = {{"rotation_rad", json::array()}, {"xyz_m", json::array()}};
-  for (int i = 0; i < 3; ++i) {
-    base_std["rotation_rad"].push_back(number_or_null(chain.base_rotation_std[i]));
-    base_std["xyz_m"].push_back(number_or_null(chain.base_translation_std[i]));
-  }
-  json per_link = json::object();
-  for (const BodyQuality& b : fit.bodies) {
-    per_link[b.link] = {{"joint", b.joint},
-                        {"samples", b.samples},
-                        {"visible", b.visible},
-                        {"inlier_share", b.inlier_share},
-                        {"rms_m", b.rms},
-                        {"symmetric", b.symmetric},
-                        {"icp_iterations", b.icp_iterations},
-                        {"ok", b.ok}};
-    if (!b.joint.empty()) per_link[b.link]["sweep_value"] = b.sweep_value;
-    per_link[b.link]["ambiguous"] = b.ambiguous;
-    if (std::isfinite(b.ambiguity_margin)) {  // an alternative value was fitted and compared
-      per_link[b.link]["alternative_value"] = b.alternative_value;
-      per_link[b.link]["alternative_margin_m"] = b.ambiguity_margin;
-    }
-  }
-  json result = {{"kind", AssetKindName(kind)},
-                 {"base",
-                  {{"xyz", {xyz.x(), xyz.y(), xyz.z()}},
-                   {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
-                   {"T_world_base", PoseRows(fit.T_world_base)}}},
-                 {"joints", joints},
-                 {"joint_std", joint_std},
-                 {"base_std", base_std},
-                 {"timing_s",
-                  {{"load", load_seconds},
-                   {"edges", fit.timings.edges},
-                   {"base_rough", fit.timings.base_rough},
-                   {"base_precise", fit.timings.base_precise},
-                   {"chain", fit.timings.chain},
-                   {"refine", fit.timings.refine},
-                   {"total", 0.0}}},
-                 {"quality",
-                  {{"per_link", per_link},
-                   {"ok", fit.ok},
-                   {"message", fit.message},
-                   {"base_rough", BaseRoughJson(fit)},
-                   {"chain_refinement",
-                    {{"refined", FLAGS_refine_chain},
-                     {"iterations", chain.iterations},
-                     {"stop_reason", IcpStopReasonName(chain.stop_reason)},
-                     {"max_displacement_m", chain.max_displacement},
-                     {"correspondences", chain.correspondences},
-                     {"sigma_m", chain.sigma},
-                     {"covariance_ok", chain.covariance_ok}}}}},
-                 {"options",
-                  {{"weighting", FLAGS_weighting},
-                   {"w_high", FLAGS_w_high},
-                   {"loss", FLAGS_loss},
-                   {"lambda", FLAGS_lambda},
-                   {"parameterization", FLAGS_parameterization},
-                   {"refine_chain", FLAGS_refine_chain},
-                   {"seed", FLAGS_seed}}},
-                 {"threads", omp_get_max_threads()}};
+  json result = FitResultJson(model, kind, options, fit);
+  result["timing_s"]["load"] = load_seconds;
   if (!FLAGS_truth.empty()) {
     json e = json::object();
     for (const JointError& j : errors.joints) e[j.name] = j.error;
@@ -319,6 +172,8 @@ int RunFit(const Command& command) {
   if (!status.ok()) return fail(status);
 
   // Report on stdout.
+  const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
+  const Eigen::Vector3d xyz = fit.T_world_base.translation();
   std::printf("base: xyz %.4f %.4f %.4f m, rpy %.3f %.3f %.3f deg\n", xyz.x(), xyz.y(), xyz.z(),
               rpy.x() * 180.0 / M_PI, rpy.y() * 180.0 / M_PI, rpy.z() * 180.0 / M_PI);
   if (FLAGS_truth.empty()) {
@@ -328,8 +183,9 @@ int RunFit(const Command& command) {
       const bool prismatic = joint.type == JointType::kPrismatic;
       const double scale = prismatic ? 1e3 : 180.0 / M_PI;
       char spread[48] = "";
-      if (std::isfinite(chain.joint_std[j])) {
-        std::snprintf(spread, sizeof(spread), "  (std %.4f)", chain.joint_std[j] * scale);
+      const double std = fit.chain_refinement.joint_std[j];
+      if (std::isfinite(std)) {
+        std::snprintf(spread, sizeof(spread), "  (std %.4f)", std * scale);
       }
       std::printf("  %-24s %+10.4f %s%s\n", joint.name.c_str(), fit.q[j] * scale,
                   prismatic ? "mm " : "deg", spread);
@@ -352,7 +208,7 @@ int RunFit(const Command& command) {
       "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
       "%s %.2f s, total %.2f s (load %.2f s)\n",
       fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain,
-      FLAGS_refine_chain ? "refine" : "covariance", fit.timings.refine, total, load_seconds);
+      options.refinement.chain.refine ? "refine" : "covariance", fit.timings.refine, total, load_seconds);
   return kExitOk;
 }
 

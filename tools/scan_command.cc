@@ -19,7 +19,7 @@
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/label_file.h"
 #include "edgefit/scanner/truth.h"
@@ -32,12 +32,9 @@ DEFINE_string(posture, "", "A named posture: POSTURES.json:NAME (e.g. assets/rob
 DEFINE_bool(random_pose, false, "Draw the independent joints uniformly inside their limits (--seed).");
 DEFINE_string(base, "0,0,0", "Base pose on the floor: x,y in m, yaw in degrees.");
 DEFINE_bool(accessories, false, "Add non-modelled accessories: harnesses, hoses, covers, brackets.");
-DEFINE_int32(scanners, 3, "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
 DEFINE_string(scanner_at, "",
               "Explicit scanner positions instead of --scanners: x,y,z[,yaw_deg] in m, several "
               "separated by ':'. Without a yaw the scanner faces the asset.");
-DEFINE_double(spacing_mm, 1.7, "Point spacing at the asset's distance [mm]; sets the angular step.");
-DEFINE_double(noise_mm, 1.0, "Gaussian range noise along the laser direction, sigma [mm].");
 DEFINE_double(max_range_m, 60.0, "Maximum range [m]; farther rays are misses.");
 DEFINE_bool(full_dome, false, "Scan 360 degrees in azimuth instead of a window around the asset.");
 DEFINE_int32(clutter, 4, "Clutter objects (pillars, boxes, a fence panel) away from the asset.");

@@ -24,13 +24,14 @@ Status ChooseAssetKind(const std::string& name, const KinematicModel& model, Ass
   return Status::Ok();
 }
 
-RobotFitOptions FitOptionsFor(AssetKind kind) {
-  RobotFitOptions options;
+FitOptions FitOptionsFor(AssetKind kind) {
+  FitOptions options;
   if (kind == AssetKind::kConveyance) {
-    options.base_rough_method = RobotFitOptions::BaseRoughMethod::kArmTips;
-    options.sweep.max_view_gap = 0.01;
-    options.base_alternatives = 1;
-    for (WeightedIcpOptions* icp : {&options.base_icp, &options.joint_icp, &options.subtree_icp}) {
+    options.base.method = BaseOptions::Method::kArmTips;
+    options.chain.sweep.max_view_gap = 0.01;
+    options.base.hypotheses.alternatives = 1;
+    for (WeightedIcpOptions* icp :
+         {&options.base.icp, &options.chain.joint_icp, &options.chain.subtree_icp}) {
       icp->quality_max_view_gap = 0.01;
     }
   }

@@ -1,4 +1,4 @@
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 
 #include <cmath>
 

@@ -14,7 +14,7 @@
 #include "edgefit/correspondence/correspondences.h"
 #include "edgefit/model/kinematic_model.h"
 #include "edgefit/model/primitive_meshes.h"
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/model/surface_sampler.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/scanner_placement.h"

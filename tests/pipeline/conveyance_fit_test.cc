@@ -15,12 +15,12 @@
 
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/joint_values.h"
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/pipeline/bench_case.h"
-#include "edgefit/pipeline/fit_errors.h"
-#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/bench/bench_case.h"
+#include "edgefit/bench/fit_errors.h"
+#include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/truth.h"
 
@@ -67,10 +67,10 @@ TEST(ConveyanceFitTest, RecoversBaseAndPrismaticJointsFromTheArmTips) {
   AssetKind kind = AssetKind::kArticulated;
   ASSERT_TRUE(ChooseAssetKind("auto", s.model, &kind).ok());
   ASSERT_EQ(kind, AssetKind::kConveyance);
-  RobotFitResult fit;
-  const Status status = FitRobot(s.model, s.scans, FitOptionsFor(kind), nullptr, &fit);
+  FitResult fit;
+  const Status status = Fit(s.model, s.scans, FitOptionsFor(kind), nullptr, &fit);
   ASSERT_TRUE(status.ok()) << status.message();
-  EXPECT_EQ(fit.base_rough_method, RobotFitOptions::BaseRoughMethod::kArmTips);
+  EXPECT_EQ(fit.base.method, BaseOptions::Method::kArmTips);
   // Four arm tips: lifter_1's pair is mirrored about the centre axis, the
   // clamps' pair (opened 15 and 100 mm) about a line 4.25 cm beside it.
   EXPECT_GE(fit.arm_tips.scan_tips.size(), 4u);
@@ -114,10 +114,10 @@ TEST(ConveyanceFitTest, AFrameTurnedHalfATurnIsToldByItsLinks) {
   VirtualScan scan;
   ASSERT_TRUE(ScanAsset(s.model, q, T_world_base, scan_options, &scan, nullptr).ok());
   for (const int alternatives : {0, 1}) {
-    RobotFitOptions options = FitOptionsFor(AssetKind::kConveyance);
-    options.base_alternatives = alternatives;
-    RobotFitResult fit;
-    ASSERT_TRUE(FitRobot(s.model, scan.scans, options, nullptr, &fit).ok());
+    FitOptions options = FitOptionsFor(AssetKind::kConveyance);
+    options.base.hypotheses.alternatives = alternatives;
+    FitResult fit;
+    ASSERT_TRUE(Fit(s.model, scan.scans, options, nullptr, &fit).ok());
     FitErrors errors;
     ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, q),
                                  T_world_base, &errors)
@@ -147,7 +147,7 @@ TEST(ConveyanceFitTest, AutoKindKeepsRobotsArticulated) {
   EXPECT_EQ(kind, AssetKind::kArticulated);
   ASSERT_TRUE(ChooseAssetKind("conveyance", robot, &kind).ok());
   EXPECT_EQ(kind, AssetKind::kConveyance);
-  EXPECT_EQ(FitOptionsFor(kind).base_rough_method, RobotFitOptions::BaseRoughMethod::kArmTips);
+  EXPECT_EQ(FitOptionsFor(kind).base.method, BaseOptions::Method::kArmTips);
   EXPECT_FALSE(ChooseAssetKind("crane", robot, &kind).ok());
 }
 

@@ -4,7 +4,7 @@
 // case is random_1 of the accuracy benchmark (benchmarks/robot_accuracy,
 // seed 1, no accessories), whose rail the cross sections placed 0.6 m off
 // along its length before candidates slid along it
-// (RobotFitOptions::slide_elongation). Skips without ../shared/robots.
+// (BaseHypothesesOptions::slide_elongation). Skips without ../shared/robots.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,11 +15,11 @@
 
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/composition.h"
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/pipeline/bench_case.h"
-#include "edgefit/pipeline/fit_errors.h"
-#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/bench/bench_case.h"
+#include "edgefit/bench/fit_errors.h"
+#include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/truth.h"
 
@@ -55,8 +55,8 @@ TEST(LinearTrackFitTest, TheRailSlidesToItsPlace) {
   VirtualScan scan;
   ASSERT_TRUE(ScanAsset(model, q, T_world_base, scan_options, &scan, nullptr).ok());
 
-  RobotFitResult fit;
-  ASSERT_TRUE(FitRobot(model, scan.scans, FitOptionsFor(kind), nullptr, &fit).ok());
+  FitResult fit;
+  ASSERT_TRUE(Fit(model, scan.scans, FitOptionsFor(kind), nullptr, &fit).ok());
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, q),
                                T_world_base, &errors)

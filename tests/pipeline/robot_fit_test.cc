@@ -4,7 +4,7 @@
 // noise. Fails if accuracy regresses (issue bar on the full 1.7 mm scenes:
 // BENCHMARK.md), if the fit depends on the thread count, or if a scan
 // without the robot gets a confident answer.
-#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/pipeline/fit.h"
 
 #include <glog/logging.h>
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
-#include "edgefit/pipeline/fit_errors.h"
+#include "edgefit/bench/fit_errors.h"
 #include "edgefit/pipeline/model_points.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/scanner_placement.h"
@@ -87,11 +87,11 @@ const RobotScene& GetScene() {
   return *scene;
 }
 
-FitErrors Fit(const ScanSet& scans, bool uniform, RobotFitResult* fit) {
+FitErrors FitScene(const ScanSet& scans, bool uniform, FitResult* fit) {
   const RobotScene& s = GetScene();
-  RobotFitOptions options;
+  FitOptions options;
   options.uniform_weights = uniform;
-  const Status status = FitRobot(s.model, scans, options, nullptr, fit);
+  const Status status = Fit(s.model, scans, options, nullptr, fit);
   EXPECT_TRUE(status.ok()) << status.message();
   FitErrors errors;
   CHECK(CompareWithTruth(s.model, fit->q, fit->T_world_base, NamedJointValues(s.model, s.q),
@@ -102,8 +102,8 @@ FitErrors Fit(const ScanSet& scans, bool uniform, RobotFitResult* fit) {
 
 TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
   const RobotScene& s = GetScene();
-  RobotFitResult fit;
-  const FitErrors errors = Fit(s.scans, false, &fit);
+  FitResult fit;
+  const FitErrors errors = FitScene(s.scans, false, &fit);
   std::printf("  %zu points; base %.3f mm %.4f deg; %.2f s\n", s.scans.TotalValid(),
               errors.base_translation * 1e3, errors.base_rotation / kDeg, fit.timings.total);
   double sum = 0.0, max = 0.0;
@@ -141,12 +141,12 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
 
 TEST(RobotFitTest, SameResultForAnyThreadCount) {
   const RobotScene& s = GetScene();
-  RobotFitResult one, two;
+  FitResult one, two;
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
-  Fit(s.scans, false, &one);
+  FitScene(s.scans, false, &one);
   omp_set_num_threads(2);
-  Fit(s.scans, false, &two);
+  FitScene(s.scans, false, &two);
   omp_set_num_threads(threads);
   EXPECT_TRUE(one.T_world_base.matrix() == two.T_world_base.matrix());
   EXPECT_EQ(one.q, two.q);
@@ -191,11 +191,11 @@ TEST(RobotFitTest, BaseHintTakesTheHeightFromTheFloor) {
   const Pose T_shift = PoseFromXyzRpy({0.0, 0.0, -1.3}, {0.0, 0.0, 0.0});
   for (OrganizedScan& scan : lowered.scans)
     scan.set_T_world_scanner(T_shift * scan.T_world_scanner());
-  RobotFitOptions options;
-  options.has_initial_base = true;
-  options.T_world_base_initial = PoseFromXyYaw(0.53, -0.17, 18.0 * kDeg);
-  RobotFitResult fit;
-  ASSERT_TRUE(FitRobot(s.model, lowered, options, nullptr, &fit).ok());
+  FitOptions options;
+  options.base.has_initial = true;
+  options.base.T_world_base_initial = PoseFromXyYaw(0.53, -0.17, 18.0 * kDeg);
+  FitResult fit;
+  ASSERT_TRUE(Fit(s.model, lowered, options, nullptr, &fit).ok());
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, s.q),
                                T_shift * s.T_world_base, &errors)
@@ -210,9 +210,9 @@ TEST(RobotFitTest, BaseHintTakesTheHeightFromTheFloor) {
 
 TEST(RobotFitTest, ScanWithoutTheRobotIsNotOk) {
   const RobotScene& s = GetScene();
-  RobotFitResult fit;
-  RobotFitOptions options;
-  const Status status = FitRobot(s.model, s.empty_scans, options, nullptr, &fit);
+  FitResult fit;
+  FitOptions options;
+  const Status status = Fit(s.model, s.empty_scans, options, nullptr, &fit);
   ASSERT_TRUE(status.ok()) << status.message();
   std::printf("  message: %s\n", fit.message.c_str());
   EXPECT_FALSE(fit.ok);
@@ -236,8 +236,8 @@ TEST(RobotFitTest, ScanOfAnotherRobotIsNotOk) {
   options.seed = 7;
   VirtualScan scan;
   ASSERT_TRUE(ScanAsset(other, q, s.T_world_base, options, &scan, nullptr).ok());
-  RobotFitResult fit;
-  const Status status = FitRobot(s.model, scan.scans, RobotFitOptions(), nullptr, &fit);
+  FitResult fit;
+  const Status status = Fit(s.model, scan.scans, FitOptions(), nullptr, &fit);
   ASSERT_TRUE(status.ok()) << status.message();
   std::printf("  message: %s\n", fit.message.c_str());
   EXPECT_FALSE(fit.ok);

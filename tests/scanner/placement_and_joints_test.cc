@@ -3,7 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/edge_proximity.h"
 #include "edgefit/scanner/scanner_placement.h"

@@ -11,7 +11,7 @@
 
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
-#include "edgefit/model/random_joints.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
 #include "edgefit/scene/accessories.h"

@@ -4,7 +4,7 @@
 // The corner-pair RANSAC and, with no usable pair, the single-corner search
 // each put the base within 1.5 cm and 1.5 degrees: close
 // enough for the precise ICP.
-#include "solvers/base_rough.h"
+#include "solvers/base/base_rough.h"
 
 #include <glog/logging.h>
 #include <gtest/gtest.h>

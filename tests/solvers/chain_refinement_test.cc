@@ -1,11 +1,11 @@
-// Whole-chain refinement (solvers/chain_refinement.h) on a virtual scan of
+// Whole-chain refinement (solvers/refinement/chain_refinement.h) on a virtual scan of
 // the bundled robot without its gun (its balancer a loop closure): the
 // derivatives of ChainKinematics are the joints' twists; from a
 // sequential-fit-sized error (base 3 mm and 0.1 degrees, every joint 0.3
 // degrees) one problem over base and joints brings them back within the
 // scan's noise, and the covariance tells the one joint the scan does not
 // pin (the round flange's); the covariance alone leaves the estimate as it is.
-#include "solvers/chain_refinement.h"
+#include "solvers/refinement/chain_refinement.h"
 
 #include <glog/logging.h>
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/asset_scan.h"
-#include "solvers/chain_kinematics.h"
+#include "solvers/refinement/chain_kinematics.h"
 
 namespace edgefit {
 namespace {
@@ -63,12 +63,13 @@ const RobotScene& GetScene() {
 // RefineChain on the scene from (*T_world_base, *q) with the given samples
 // (every link point-to-plane).
 Status Refine(const std::vector<SurfaceSamples>& samples, const ChainRefinementOptions& options,
-              Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary) {
+              Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary,
+              const ResidualOptions& residuals = ResidualOptions()) {
   const RobotScene& s = GetScene();
   CorrespondenceSearch search(&s.scans, nullptr);
   const std::vector<bool> point_to_point(samples.size(), false);
-  return RefineChain(s.model, s.scans, &search, samples, point_to_point, options, T_world_base, q,
-                     summary);
+  return RefineChain(s.model, s.scans, &search, samples, point_to_point, options, residuals,
+                     T_world_base, q, summary);
 }
 
 ChainRefinementOptions CovarianceOnly() {
@@ -92,16 +93,17 @@ void PerturbedStart(Pose* T_world_base, std::vector<double>* q) {
 
 TEST(ChainKinematicsTest, DerivativesAreTheTwistsOfBaseAndJoints) {
   const RobotScene& s = GetScene();
-  ChainKinematics kinematics(&s.model, s.T_world_base, s.q);
-  const std::vector<int>& independent = kinematics.independent_joints();
+  const std::vector<int> independent = s.model.IndependentJoints();
   ASSERT_EQ(independent.size(), 6u);
   const double delta[6] = {0, 0, 0, 0, 0, 0};
   std::vector<double> q_independent;
   for (const int j : independent) q_independent.push_back(s.q[static_cast<size_t>(j)]);
+  ChainKinematics kinematics(&s.model, s.T_world_base, s.q, delta, q_independent.data());
+  kinematics.PrepareForEvaluation(/*evaluate_jacobians=*/true, /*new_evaluation_point=*/true);
   const std::vector<Pose> T = s.model.ForwardKinematics(s.q, s.T_world_base);
   const int flange = s.model.LinkIndex("link_6");
   ASSERT_GE(flange, 0);
-  const LinkPoseJacobian& pose = kinematics.At(delta, q_independent.data(), flange);
+  const LinkPoseJacobian& pose = kinematics.At(flange);
   const Eigen::Vector3d t = T[static_cast<size_t>(flange)].translation();
   EXPECT_LT((pose.t - t).norm(), 1e-12);
   const Eigen::Vector3d t_base = s.T_world_base.translation();
@@ -162,10 +164,11 @@ TEST(ChainRefinementTest, ARobustLossTakesOneSamplePerBlockAndAgrees) {
   Pose T_world_base;
   std::vector<double> q;
   PerturbedStart(&T_world_base, &q);
-  ChainRefinementOptions options;
-  options.icp.loss = "huber";  // 5 mm: quadratic for the scan's 1 mm noise
+  ResidualOptions huber;
+  huber.loss = "huber";  // 5 mm: quadratic for the scan's 1 mm noise
   ChainRefinementSummary summary;
-  ASSERT_TRUE(Refine(s.samples, options, &T_world_base, &q, &summary).ok());
+  ASSERT_TRUE(
+      Refine(s.samples, ChainRefinementOptions(), &T_world_base, &q, &summary, huber).ok());
   EXPECT_EQ(summary.stop_reason, IcpStopReason::kConverged);
   for (const int j : s.model.IndependentJoints()) {
     const size_t k = static_cast<size_t>(j);

@@ -1,7 +1,7 @@
 // Height map and convex tips (paper Sec. 6.1, Eq. 11-13) on synthetic
 // points: a cone's apex is a tip wherever it falls in its cell; a box's
 // corners, a ridge and a stray point in the air are not.
-#include "solvers/height_map.h"
+#include "solvers/base/height_map.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // runner-up; a box centred on the axis (2-fold symmetric) has a runner-up
 // half a turn away that costs about the same; the result does not depend
 // on the thread count.
-#include "solvers/joint_sweep.h"
+#include "solvers/joints/joint_sweep.h"
 
 #include <glog/logging.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // LinkMotion: joint poses and the projection of a free pose onto the joint
 // (paper Sec. 5.2.2 and 6.2.2).
-#include "solvers/link_motion.h"
+#include "solvers/registration/link_motion.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The symmetry axis of arm tips (paper Sec. 6.1, Fig. 11b): recovered from
 // mirrored tips among unpaired ones, refined by least squares; parallel
 // shifted pairs give distinct axes; same input, same axes.
-#include "solvers/symmetry_axis.h"
+#include "solvers/base/symmetry_axis.h"
 
 #include <gtest/gtest.h>
 

@@ -20,7 +20,7 @@
 #include "edgefit/scene/tube_mesh.h"
 #include "solvers/icp_test_util.h"
 #include "solvers/link_scan_test_util.h"
-#include "solvers/weighted_icp.h"
+#include "solvers/registration/weighted_icp.h"
 
 namespace edgefit {
 namespace {
@@ -86,10 +86,10 @@ struct Errors {
 // the engine's default gate schedule (3 cm halving to 5 mm).
 Errors FitLink(bool uniform_weights, bool fixed_gate) {
   const TubeScene& s = GetScene();
-  CorrespondenceSearch search(&s.scans, &s.edges.w_edge);
+  // Uniform weights: a search without weights.
+  CorrespondenceSearch search(&s.scans, uniform_weights ? nullptr : &s.edges.w_edge);
   WeightedIcp icp(&s.scans, &search);
   WeightedIcpOptions options;
-  options.uniform_weights = uniform_weights;
   options.correspondence.max_distance = 0.03;
   if (fixed_gate) options.final_gate = options.correspondence.max_distance;
   options.max_iterations = 200;

@@ -1,7 +1,7 @@
-// Weighted ICP engine (solvers/weighted_icp.h) on synthetic clouds with known
+// Weighted ICP engine (solvers/registration/weighted_icp.h) on synthetic clouds with known
 // transforms: the target is the CAD samples themselves, posed by the truth
 // (and perturbed by noise), so the exact answer is known.
-#include "solvers/weighted_icp.h"
+#include "solvers/registration/weighted_icp.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -65,9 +65,9 @@ struct FitOutput {
 };
 
 FitOutput RunFit(const Synthetic& s, const LinkMotion& motion, const WeightedIcpOptions& options,
-                 const LinkState& initial) {
+                 const LinkState& initial, const ResidualOptions& residuals = ResidualOptions()) {
   CorrespondenceSearch search(&s.scans, &s.weights);
-  WeightedIcp icp(&s.scans, &search);
+  WeightedIcp icp(&s.scans, &search, nullptr, residuals);
   FitOutput out;
   out.state = initial;
   const Status status = icp.Fit(s.samples, motion, options, &out.state, &out.summary);
@@ -120,11 +120,11 @@ TEST_P(JointRecoveryTest, RecoveredExactlyWithoutNoise) {
   const bool revolute = c.type == LinkMotion::Type::kRevolute;
   const double q_true = revolute ? 1.2 : 0.21;
   const Synthetic s = MakeSynthetic(motion.PoseAt(q_true), 0.0);
-  WeightedIcpOptions options = KdTreeOptions();
-  options.parameterization = c.parameterization;
+  ResidualOptions residuals;
+  residuals.parameterization = c.parameterization;
   LinkState initial;
   initial.q = q_true + (revolute ? 4.0 * kDeg : 0.03);
-  const FitOutput out = RunFit(s, motion, options, initial);
+  const FitOutput out = RunFit(s, motion, KdTreeOptions(), initial, residuals);
   EXPECT_EQ(out.summary.stop_reason, IcpStopReason::kConverged);
   EXPECT_NEAR(out.state.q, q_true, 1e-6);
   EXPECT_LT(TranslationError(out.state.T_world_link, motion.PoseAt(q_true)), 1e-6);
@@ -175,11 +175,11 @@ TEST_P(JointRecoveryTest, WithinNoiseBound) {
   const double q_true = revolute ? -0.6 : -0.12;
   const double sigma = 0.001;
   const Synthetic s = MakeSynthetic(motion.PoseAt(q_true), sigma);
-  WeightedIcpOptions options = KdTreeOptions();
-  options.parameterization = c.parameterization;
+  ResidualOptions residuals;
+  residuals.parameterization = c.parameterization;
   LinkState initial;
   initial.q = q_true - (revolute ? 3.0 * kDeg : 0.02);
-  const FitOutput out = RunFit(s, motion, options, initial);
+  const FitOutput out = RunFit(s, motion, KdTreeOptions(), initial, residuals);
   const double error = std::abs(out.state.q - q_true);
   std::printf("  %s: joint error %.6f %s\n", c.name.c_str(), revolute ? error / kDeg : error * 1e3,
               revolute ? "deg" : "mm");
@@ -278,13 +278,15 @@ TEST(WeightedIcpTest, StopsWhenTheScanIsElsewhere) {
 TEST(WeightedIcpTest, RejectsBadOptionsAndInputs) {
   const Synthetic s = MakeSynthetic(kTrueFreePose, 0.0);
   CorrespondenceSearch search(&s.scans, &s.weights);
-  WeightedIcp icp(&s.scans, &search);
+  ResidualOptions bad_loss;
+  bad_loss.loss = "l7";
+  WeightedIcp bad_icp(&s.scans, &search, nullptr, bad_loss);
   LinkState state;
   WeightedIcpSummary summary;
   WeightedIcpOptions options = KdTreeOptions();
-  options.loss = "l7";
-  Status status = icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary);
+  Status status = bad_icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary);
   EXPECT_NE(status.message().find("unknown loss 'l7'"), std::string::npos) << status.message();
+  WeightedIcp icp(&s.scans, &search);
   options = KdTreeOptions();
   options.max_iterations = 0;
   EXPECT_FALSE(icp.Fit(s.samples, LinkMotion::Free(), options, &state, &summary).ok());

@@ -11,7 +11,7 @@
 
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
-#include "edgefit/pipeline/robot_fit.h"
+#include "edgefit/pipeline/fit_options.h"
 
 namespace edgefit {
 
@@ -25,7 +25,7 @@ Status ChooseAssetKind(const std::string& name, const KinematicModel& model, Ass
 // The default fit options of a kind (conveyance: the arm-tip base rough,
 // faces seen edge-on left out of the Eq. 9 sweeps and the quality measure:
 // JointSweepOptions::max_view_gap, WeightedIcpOptions::quality_max_view_gap).
-RobotFitOptions FitOptionsFor(AssetKind kind);
+FitOptions FitOptionsFor(AssetKind kind);
 
 }  // namespace edgefit
 

@@ -1,0 +1,73 @@
+// One scene of the paper's evaluation (Sec. 7.3-7.4) and its fit: a model
+// in a posture on a base pose, scanned by the virtual scanner (with or
+// without accessories), fitted, and scored against the scanner's truth.
+// `edgefit bench` and benchmarks/robot_accuracy run these.
+#ifndef EDGEFIT_BENCH_BENCH_CASE_H_
+#define EDGEFIT_BENCH_BENCH_CASE_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/bench/fit_errors.h"
+#include "edgefit/pipeline/fit.h"
+#include "edgefit/scanner/asset_scan.h"
+
+namespace edgefit {
+
+struct BenchCase {
+  std::string name;       // the posture's ("load", "random_3")
+  std::vector<double> q;  // every joint, model order
+  Pose T_world_base = Pose::Identity();
+  uint64_t seed = 0;  // the scene's (AssetScanOptions::seed)
+};
+
+// Case i draws its base pose and scene seed from stream `stream` of `seed`:
+// x, y uniform in [-base_range, base_range] [m], yaw uniform.
+BenchCase MakeBenchCase(const std::string& name, uint64_t seed, uint64_t stream, double base_range);
+
+// Every named posture of a postures file (assets/*/postures.json), posture
+// i on stream i. Fails on a file that does not load or a posture that does
+// not fit the model.
+Status NamedPostureCases(const KinematicModel& model, const std::string& postures_file,
+                         uint64_t seed, double base_range, std::vector<BenchCase>* cases);
+
+// A failed fit (issue bars): a revolute joint off by more than this [rad],
+// a prismatic one by more than this [m].
+constexpr double kFailedRevolute = 0.5 * M_PI / 180.0;
+constexpr double kFailedPrismatic = 0.005;
+
+struct BenchResult {
+  size_t points = 0;  // valid scan points
+  FitErrors errors;
+  FitTimings timings;
+  std::vector<BodyQuality> bodies;
+  ChainRefinementSummary chain;  // refinement and covariance (joint_std)
+  bool ok = false;               // the fit's own verdict (FitResult::ok)
+  std::string message;
+  bool failed = false;  // an independent joint beyond the bounds above
+};
+
+// The case's scene (ScanAsset with scan_options, its seed replaced by the
+// case's): scan it once, fit it with several options.
+Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
+                     AssetScanOptions scan_options, VirtualScan* scan);
+
+// Fits the scan of the case with fit_options and scores it.
+Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
+                    const FitOptions& fit_options, BenchResult* result,
+                    const ProgressFn& progress = nullptr);
+
+// Mean, 95th percentile (the smallest value at or above 95 % of them) and
+// largest of a set of errors; all 0 for none.
+struct ErrorStats {
+  double mean = 0.0, p95 = 0.0, max = 0.0;
+};
+ErrorStats SummarizeErrors(std::vector<double> values);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_BENCH_BENCH_CASE_H_

@@ -1,0 +1,52 @@
+// A fit scored against the virtual scanner's ground truth (paper Sec. 7.3):
+// per-joint errors, base pose errors and the failed-fit rule of the issue
+// bar (any joint off by more than the failure threshold).
+#ifndef EDGEFIT_BENCH_FIT_ERRORS_H_
+#define EDGEFIT_BENCH_FIT_ERRORS_H_
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/model/kinematic_model.h"
+
+namespace edgefit {
+
+struct JointError {
+  std::string name;
+  bool prismatic = false;
+  bool independent = true;  // false: mimic or loop-closure joint
+  double truth = 0.0;       // [rad] or [m]
+  double fit = 0.0;
+  double error = 0.0;  // |fit - truth| [rad] (modulo a turn) or [m]
+};
+
+struct FitErrors {
+  std::vector<JointError> joints;  // every non-fixed joint, model order
+  double base_translation = 0.0;   // [m]
+  double base_rotation = 0.0;      // [rad]
+  // The tool tip (ToolTipLink): its origin's distance from where the
+  // truth puts it [m], base and every joint error together.
+  std::string tool_tip_link;
+  double tool_tip = 0.0;
+};
+
+// The tool tip: the end of the arm, where a process happens. The link with
+// the most revolute joints between it and the root, ties going to the one
+// with the most fixed joints (a TCP frame below the flange), then to the
+// first in model order. Prismatic joints do not count: a gun's moving jaw
+// is not its TCP. The bundled robot with its gun: `tcp`; without: `tool0`.
+int ToolTipLink(const KinematicModel& model);
+
+// truth_joints: name -> value of every non-fixed joint (Truth::joints).
+// Fails when a joint of the model is missing from the truth.
+Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& q_fit,
+                        const Pose& T_world_base_fit,
+                        const std::vector<std::pair<std::string, double>>& truth_joints,
+                        const Pose& T_world_base_truth, FitErrors* errors);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_BENCH_FIT_ERRORS_H_

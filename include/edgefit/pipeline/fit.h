@@ -1,0 +1,37 @@
+// Fits a kinematic model (a KinematicModel, end effectors attached) of an
+// articulated robot or a conveyance system to a scan: the paper's pipeline.
+//   Sec. 4    edges and their weights on the scan lattice;
+//   Sec. 5.1  the base: rough poses (5.1.1 cross sections, or 6.1 arm tips),
+//             then the precise weighted ICP (5.1.2);
+//   Sec. 5.2  every joint, parents first: the Eq. (9) sweep, then the
+//             joint-constrained weighted ICP; 5.3 end effectors alike;
+//   then the whole chain refined at once, its covariance, and the verdict
+//   of each body against the scan.
+// A "body" is the link moved by a joint together with every link fixed to
+// it (fixed joints, attached end effectors): they move as one.
+#ifndef EDGEFIT_PIPELINE_FIT_H_
+#define EDGEFIT_PIPELINE_FIT_H_
+
+#include <functional>
+#include <string>
+
+#include "edgefit/core/status.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/pipeline/fit_options.h"
+#include "edgefit/pipeline/fit_result.h"
+#include "edgefit/scan/organized_scan.h"
+
+namespace edgefit {
+
+// Progress lines ("base: rough ...") for long steps; may be empty.
+using ProgressFn = std::function<void(const std::string&)>;
+
+// Fails (Status) on invalid options, a model without a base mesh or a scan
+// the stages cannot work on; a fit that runs but does not match the scan
+// returns Ok with result->ok = false and a message.
+Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& options,
+           const ProgressFn& progress, FitResult* result);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_PIPELINE_FIT_H_

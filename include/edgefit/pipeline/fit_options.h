@@ -1,0 +1,91 @@
+// Every setting of a fit, each in one place: FitOptions holds one struct
+// per stage of the method (the folder that reads it in brackets) and the
+// settings every stage shares. Commands read it from flags in one function
+// (tools/fit_flags.h); FitOptionsFor (asset_kind.h) gives the defaults of
+// a kind of equipment.
+#ifndef EDGEFIT_PIPELINE_FIT_OPTIONS_H_
+#define EDGEFIT_PIPELINE_FIT_OPTIONS_H_
+
+#include <cstdint>
+#include <string>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/edges/edge_detector.h"
+#include "solvers/base/base_hypotheses.h"
+#include "solvers/base/base_rough.h"
+#include "solvers/base/conveyance_base_rough.h"
+#include "solvers/joints/body.h"
+#include "solvers/joints/chain_fitter.h"
+#include "solvers/refinement/chain_refinement.h"
+#include "solvers/registration/residual_options.h"
+#include "solvers/registration/weighted_icp.h"
+
+namespace edgefit {
+
+// Sec. 5.1 / 6.1: the base link (solvers/base/, solvers/registration/).
+struct BaseOptions {
+  // The rough stage: cross-section corners (Sec. 5.1.1, robots) or arm tips
+  // and their symmetry axis (Sec. 6.1, conveyance systems). When the tips
+  // find no placement, the cross sections are tried.
+  enum class Method { kCrossSections, kArmTips };
+  Method method = Method::kCrossSections;
+  BaseRoughOptions cross_sections;     // its seed is FitOptions::seed
+  ConveyanceBaseRoughOptions arm_tips;  // its symmetry seed is FitOptions::seed
+  BaseHypothesesOptions hypotheses;
+  // Sec. 5.1.2: the base's precise ICP (6-DoF); its first gate covers the
+  // rough error.
+  WeightedIcpOptions icp = DefaultIcp();
+  // Optional hint: skip the rough stage and start from this pose, its z
+  // measured from the scan's floor (EstimateFloorHeight; 0 for equipment
+  // standing on it: the hint need not know where the scan's origin is).
+  bool has_initial = false;
+  Pose T_world_base_initial = Pose::Identity();
+
+  static WeightedIcpOptions DefaultIcp();
+  bool IsValid(std::string* error) const;
+};
+
+// The refinement of the whole chain (solvers/refinement/).
+struct RefinementOptions {
+  // On by default: after the sequential fit, one Ceres problem over the
+  // base pose and every joint together. It lowered the revolute errors of
+  // every robot measured and the conveyor's prismatic errors, for about
+  // 1 s on 6 M points (BENCHMARK.md, "Whole-chain refinement"). The
+  // covariance of the joints is computed either way (chain.covariance).
+  ChainRefinementOptions chain;
+};
+
+// The verdict of each body alone at the final values (src/pipeline/quality).
+struct QualityOptions {
+  // A body fits when at least this share of its visible samples is within
+  // the final gate of the joint ICP and their RMS is at most max_rms [m].
+  double min_inlier_share = 0.8;
+  double max_rms = 0.003;  // [m]
+
+  bool IsValid(std::string* error) const;
+};
+
+struct FitOptions {
+  // Seed of the CAD sampling and of every RANSAC.
+  uint64_t seed = 1;
+  // Uniform weights (w_edge = 1) in every stage instead of Eq. (6)'s:
+  // the correspondence search is then given no weights.
+  bool uniform_weights = false;
+  // Sec. 4: edges and their weights (w_high lives here).
+  EdgeDetectionOptions edges;
+  // The loss and joint constraint of every precise stage.
+  ResidualOptions residuals;
+  // The CAD samples of every stage.
+  CadSampleOptions samples;
+  BaseOptions base;
+  // Sec. 5.2-5.3 / 6.2: every joint (solvers/joints/).
+  ChainOptions chain;
+  RefinementOptions refinement;
+  QualityOptions quality;
+
+  bool IsValid(std::string* error) const;
+};
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_PIPELINE_FIT_OPTIONS_H_

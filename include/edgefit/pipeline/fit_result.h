@@ -1,0 +1,62 @@
+// What a fit returns: the base pose, every joint, and how well each body
+// matches the scan (the quality verdict), per stage.
+#ifndef EDGEFIT_PIPELINE_FIT_RESULT_H_
+#define EDGEFIT_PIPELINE_FIT_RESULT_H_
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/pipeline/fit_options.h"
+#include "solvers/base/base_rough.h"
+#include "solvers/base/conveyance_base_rough.h"
+#include "solvers/refinement/chain_refinement.h"
+
+namespace edgefit {
+
+struct BodyQuality {
+  std::string link;    // the moved link (the base: the root)
+  std::string joint;   // the joint that moves it ("" for the base)
+  size_t samples = 0;  // CAD samples
+  size_t visible = 0;  // seen at the fitted pose
+  double inlier_share = 0.0;
+  double rms = 0.0;          // [m]
+  bool symmetric = false;    // the sweep included the child's loss
+  double sweep_value = 0.0;  // rough joint value [rad] or [m]
+  int icp_iterations = 0;
+  // The other joint value the ambiguity checks fitted (ambiguity_margin:
+  // their loss difference per sample [m]; infinity when not checked).
+  bool ambiguous = false;
+  double alternative_value = 0.0;
+  double ambiguity_margin = std::numeric_limits<double>::infinity();
+  bool ok = false;
+};
+
+struct FitTimings {
+  // refine: the whole-chain refinement (or the covariance alone) [s]
+  double edges = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0, refine = 0.0,
+         total = 0.0;  // [s]
+};
+
+struct FitResult {
+  Pose T_world_base = Pose::Identity();  // root link in the world frame
+  std::vector<double> q;                 // every joint, KinematicModel order
+  // The base's rough stage: which method gave the pose, its result (the
+  // pose, candidates and floor are in base_rough for either method).
+  BaseOptions::Method base_rough_method = BaseOptions::Method::kCrossSections;
+  BaseRoughResult base_rough;
+  ConveyanceBaseRoughResult arm_tips;  // kArmTips
+  std::vector<BodyQuality> bodies;     // base first, then joints in fit order
+  // The whole-chain refinement and the covariance: joint_std per joint
+  // [rad] or [m], NaN for dependent joints or when not computed.
+  ChainRefinementSummary chain_refinement;
+  FitTimings timings;
+  bool ok = false;
+  std::string message;  // why not ok
+};
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_PIPELINE_FIT_RESULT_H_

@@ -1,0 +1,100 @@
+// Rough registration of a robot's base link (paper Sec. 5.1.1): the base
+// stands level on the floor, so its pose is (x, y, yaw) plus the floor
+// height. Horizontal cross-sections of the scan's wireframe and of the base
+// mesh are cut at the same heights above the floor; their corners (Eq. 7)
+// are matched by RANSAC: two scan corners and two model corners at equal
+// distance at one height give a hypothesis, scored by how many model
+// section points land on scan section points at every height. A round
+// base with few corners may show no pair: then single corners are matched
+// with the yaw on a grid (BaseRoughOptions::single_corner_*). No manual
+// initialisation; an optional box limits the scan to a region.
+//
+// The floor: the most populated 5 mm height bin of the scan points with a
+// vertical normal (edge-stage normals), refined to the mean height of the
+// points in it and the two bins on either side.
+#ifndef EDGEFIT_SOLVERS_BASE_BASE_ROUGH_H_
+#define EDGEFIT_SOLVERS_BASE_BASE_ROUGH_H_
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/model/triangle_mesh.h"
+#include "edgefit/scan/organized_scan.h"
+#include "solvers/base/cross_sections.h"
+
+namespace edgefit {
+
+struct BaseRoughOptions {
+  // Section heights as fractions of the base mesh's height above its lowest
+  // point, each at least min_height above it (the floor touches the bottom).
+  std::vector<double> height_fractions = {0.05, 0.2, 0.35, 0.5, 0.7, 0.85};
+  double min_height = 0.015;  // [m]
+  // Wireframe: grid neighbours farther apart are not joined [m].
+  double max_edge = 0.03;
+  // Model sections are sampled at this spacing [m].
+  double model_spacing = 0.002;
+  CornerOptions corners;
+  // RANSAC: scan corner pairs drawn, model pairs whose length differs by
+  // less than pair_tolerance [m] are tried in both orders; a model section
+  // point is an inlier within inlier_distance [m] of a scan section point.
+  int iterations = 3000;
+  double pair_tolerance = 0.01;
+  double min_pair_length = 0.05;  // [m]
+  double inlier_distance = 0.01;
+  int score_points_per_section = 400;  // model points scored per height
+  uint64_t seed = 1;
+  // The best hypotheses kept (distinct: yaw apart by more than 3 degrees or
+  // positions by more than 2 cm), for the caller to choose from with a 3D
+  // test; symmetric bases (a square plate) score alike in 2D.
+  int candidates = 6;
+  // Single-corner search, run when the corner pairs' best hypothesis scores
+  // below this share of the model section points (few corners, one hidden):
+  // each scan corner onto each model corner, the yaw on a grid of
+  // single_corner_yaw_step [rad]; the single_corner_rescored best by a sparse
+  // score are scored in full.
+  double single_corner_below_share = 0.3;
+  double single_corner_yaw_step = 1.0 * M_PI / 180.0;
+  int single_corner_rescored = 200;
+  // Optional region of the scan (world frame); empty: the whole scan.
+  Eigen::AlignedBox3d roi_world;
+  // Floor: normals within this angle of vertical (cosine).
+  double floor_normal_cos = 0.97;
+
+  bool IsValid(std::string* error) const;
+};
+
+struct BaseRoughResult {
+  Pose T_world_base = Pose::Identity();  // the best hypothesis
+  std::vector<Pose> candidates;          // distinct hypotheses, best first (incl. the best)
+  double floor_z = 0.0;                  // [m]
+  int scan_corners = 0;                  // over all heights
+  int model_corners = 0;
+  int hypotheses = 0;         // scored
+  double inlier_share = 0.0;  // of the scored model section points, at the best pose
+  double seconds = 0.0;
+};
+
+// base_mesh_link: the base link's mesh in its link frame (z up when the
+// robot stands level). normals_scanner: unit normals per scan per cell in the
+// scanner frame (EdgeDetectionResult::normals), NaN where undefined. Fails
+// with a message when no floor, no corners or no hypothesis is found.
+Status FitBaseRough(const ScanSet& scans,
+                    const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
+                    const TriangleMesh& base_mesh_link, const BaseRoughOptions& options,
+                    BaseRoughResult* result);
+
+// The floor height of the scan (see above), inside roi_world when not empty.
+Status EstimateFloorHeight(const ScanSet& scans,
+                           const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
+                           const Eigen::AlignedBox3d& roi_world, double normal_cos,
+                           double* floor_z);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SOLVERS_BASE_BASE_ROUGH_H_

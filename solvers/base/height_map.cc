@@ -1,0 +1,115 @@
+#include "solvers/base/height_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace edgefit {
+
+bool ConvexTipOptions::IsValid(std::string* error) const {
+  if (!(threshold >= 0.0) || !(min_drop >= 0.0) || !(separation >= 0.0) || min_neighbours < 0 ||
+      min_neighbours > 8) {
+    if (error != nullptr) {
+      *error =
+          "convex tips: threshold, min_drop and separation must be >= 0, "
+          "min_neighbours in [0, 8]";
+    }
+    return false;
+  }
+  return true;
+}
+
+Status HeightMap::Create(const Eigen::AlignedBox2d& extent, double cell, HeightMap* map,
+                         size_t max_cells) {
+  if (!(cell > 0.0)) return Status::Error("height map: the cell size must be > 0");
+  if (extent.isEmpty()) return Status::Error("height map: no points");
+  const Eigen::Vector2d size = extent.sizes();
+  const double cells = std::ceil(size.x() / cell + 1.0) * std::ceil(size.y() / cell + 1.0);
+  if (cells > static_cast<double>(max_cells)) {
+    char line[200];
+    std::snprintf(line, sizeof(line),
+                  "height map: the points span %.1f x %.1f m, too large for %.0f mm cells; "
+                  "limit the scan to a region around the equipment",
+                  size.x(), size.y(), 1e3 * cell);
+    return Status::Error(line);
+  }
+  *map = HeightMap();
+  map->origin_ = extent.min();
+  map->cell_ = cell;
+  map->width_ = static_cast<int>(std::ceil(size.x() / cell + 1.0));
+  map->height_ = static_cast<int>(std::ceil(size.y() / cell + 1.0));
+  const size_t n = static_cast<size_t>(map->width_) * static_cast<size_t>(map->height_);
+  map->top_.assign(n, Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity()));
+  map->source_.assign(n, -1);
+  return Status::Ok();
+}
+
+void HeightMap::Add(const Eigen::Vector3d& p, int source) {
+  const Eigen::Vector2d local = p.head<2>() - origin_;
+  const double fi = std::floor(local.x() / cell_), fj = std::floor(local.y() / cell_);
+  if (!(fi >= 0.0 && fj >= 0.0 && fi < width_ && fj < height_)) return;  // NaN too
+  const int k = Index(static_cast<int>(fi), static_cast<int>(fj));
+  if (source_[k] >= 0 && !(p.z() > top_[k].z())) return;
+  top_[k] = Eigen::Vector3f(static_cast<float>(local.x()), static_cast<float>(local.y()),
+                            static_cast<float>(p.z()));
+  source_[k] = source;
+}
+
+std::vector<HeightMap::Tip> HeightMap::ConvexTips(const ConvexTipOptions& options) const {
+  const float lowest = -std::numeric_limits<float>::infinity();
+  auto P = [&](int i, int j) { return Has(i, j) ? top_[Index(i, j)].z() : lowest; };
+  const float T = static_cast<float>(options.threshold);
+  const float drop = static_cast<float>(options.min_drop);
+  struct Candidate {
+    float z;
+    int k;
+  };
+  std::vector<Candidate> candidates;
+  for (int j = 0; j < height_; ++j) {
+    for (int i = 0; i < width_; ++i) {
+      if (!Has(i, j)) continue;
+      const float p = P(i, j);
+      int neighbours = 0;
+      for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) neighbours += (di != 0 || dj != 0) && Has(i + di, j + dj);
+      }
+      if (neighbours < options.min_neighbours) continue;
+      // Eq. (13): the four second differences (a missing cell is -inf: passes).
+      const bool convex = 2 * p - P(i + 1, j) - P(i - 1, j) > T &&
+                          2 * p - P(i, j + 1) - P(i, j - 1) > T &&
+                          2 * p - P(i + 1, j + 1) - P(i - 1, j - 1) > T &&
+                          2 * p - P(i + 1, j - 1) - P(i - 1, j + 1) > T;
+      if (!convex) continue;
+      bool highest = true;  // the ring two cells away
+      for (int d = -2; d <= 2 && highest; ++d) {
+        highest = P(i + d, j - 2) < p - drop && P(i + d, j + 2) < p - drop &&
+                  P(i - 2, j + d) < p - drop && P(i + 2, j + d) < p - drop;
+      }
+      if (highest) candidates.push_back({p, Index(i, j)});
+    }
+  }
+  // Highest first (ties by cell: deterministic), then one per `separation`.
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.z != b.z ? a.z > b.z : a.k < b.k;
+  });
+  std::vector<Tip> tips;
+  const double separation2 = options.separation * options.separation;
+  for (const Candidate& c : candidates) {
+    Tip tip;
+    tip.p = top_[c.k].cast<double>();
+    tip.p.head<2>() += origin_;
+    tip.source = source_[c.k];
+    bool far = true;
+    for (const Tip& kept : tips) {
+      if ((kept.p.head<2>() - tip.p.head<2>()).squaredNorm() < separation2) {
+        far = false;
+        break;
+      }
+    }
+    if (far) tips.push_back(tip);
+  }
+  return tips;
+}
+
+}  // namespace edgefit

@@ -1,0 +1,113 @@
+// ChainFitter's ambiguity checks (extensions of Sec. 5.2): a joint whose
+// sweep found a near-equal runner-up is fitted from there too, and the
+// lower Eq. (9) loss of its subtree wins; a revolute joint the scan does not
+// pin down is flagged.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <utility>
+
+#include "solvers/joints/chain_fitter.h"
+
+namespace edgefit {
+
+Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
+                         std::vector<double>* q, bool* switched) {
+  *switched = false;
+  for (size_t i = 0; i < records->size(); ++i) {
+    const JointRecord& record = (*records)[i];
+    if (!(record.sweep_margin < options_.ambiguity_check_loss)) continue;
+    const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+    std::vector<double> q_other = *q;
+    std::vector<JointRecord> other_records = *records;
+    q_other[static_cast<size_t>(record.joint)] = record.sweep.runner_up_q;
+    (void)model_.ResolveDependentJoints(&q_other);
+    const std::vector<bool> below = SubtreeMask(j.child_link);
+    for (size_t k = i + 1; k < records->size(); ++k) {
+      const int link = model_.joints()[static_cast<size_t>((*records)[k].joint)].child_link;
+      if (below[static_cast<size_t>(link)]) {
+        EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, &q_other, &other_records[k]));
+      }
+    }
+    EDGEFIT_RETURN_IF_ERROR(
+        RefineSubtrees(T_world_base, i, j.child_link, &other_records, &q_other));
+    const size_t jj = static_cast<size_t>(record.joint);
+    const double separation = j.type == JointType::kPrismatic
+                                  ? std::abs(q_other[jj] - (*q)[jj])
+                                  : std::abs(std::remainder(q_other[jj] - (*q)[jj], 2.0 * M_PI));
+    const double distinct = j.type == JointType::kPrismatic ? options_.sweep.distinct_prismatic
+                                                            : options_.sweep.distinct_revolute;
+    if (separation < 0.5 * distinct) continue;  // back in the same basin: no alternative
+    size_t samples = 0;
+    const double loss = SubtreeLoss(T_world_base, *q, j.child_link, &samples);
+    const double other_loss = SubtreeLoss(T_world_base, q_other, j.child_link, &samples);
+    const bool take_other = other_loss < loss;
+    const double alternative = take_other ? (*q)[jj] : q_other[jj];
+    if (take_other) {
+      *switched = true;
+      *q = std::move(q_other);
+      *records = std::move(other_records);
+    }
+    JointRecord& checked = (*records)[i];
+    checked.alternative = alternative;
+    checked.margin =
+        std::abs(other_loss - loss) / static_cast<double>(std::max<size_t>(samples, 1));
+    checked.ambiguous = checked.margin < options_.ambiguity_mean_loss;
+    char line[320];
+    std::snprintf(line, sizeof(line),
+                  "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s",
+                  j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin,
+                  take_other ? " (the first fit's value)" : "",
+                  checked.ambiguous ? ": AMBIGUOUS" : "");
+    say_(line);
+  }
+  return Status::Ok();
+}
+
+void ChainFitter::CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
+                  const std::vector<double>& q) const {
+  for (JointRecord& record : *records) {
+    const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+    if (j.type == JointType::kPrismatic) continue;  // see ChainOptions::pinning_mean_loss
+    const size_t jj = static_cast<size_t>(record.joint);
+    const double step = options_.pinning_revolute;
+    size_t samples = 0;
+    const double loss = SubtreeLoss(T_world_base, q, j.child_link, &samples);
+    if (samples == 0) continue;
+    // The mean rise of the two sides: a tilted valley (the ICP's value a
+    // little off the Eq. 9 minimum) still rises on average; a flat one
+    // does not.
+    double rise_sum = 0.0, lowest = std::numeric_limits<double>::infinity();
+    double moved_to = q[jj];
+    int sides = 0;
+    for (const double sign : {-1.0, 1.0}) {
+      std::vector<double> q_moved = q;
+      q_moved[jj] += sign * step;
+      if (j.has_limits && (q_moved[jj] < j.lower || q_moved[jj] > j.upper)) continue;
+      (void)model_.ResolveDependentJoints(&q_moved);
+      const double r = (SubtreeLoss(T_world_base, q_moved, j.child_link, &samples) - loss) /
+                       static_cast<double>(samples);
+      rise_sum += r;
+      ++sides;
+      if (r < lowest) {
+        lowest = r;
+        moved_to = q_moved[jj];
+      }
+    }
+    if (sides == 0) continue;
+    const double rise = rise_sum / sides;
+    char line[200];
+    std::snprintf(line, sizeof(line), "pinning: %s moved by %g costs %.3f mm/sample more%s",
+                  j.name.c_str(), step, 1e3 * rise,
+                  rise < options_.pinning_mean_loss ? ": AMBIGUOUS" : "");
+    say_(line);
+    if (rise < options_.pinning_mean_loss && rise < record.margin) {
+      record.ambiguous = true;
+      record.alternative = moved_to;
+      record.margin = rise;
+    }
+  }
+}
+
+}  // namespace edgefit

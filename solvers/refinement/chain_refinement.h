@@ -1,0 +1,89 @@
+// Whole-chain refinement (--refine_chain, an extension of paper Sec. 5):
+// after the sequential fit (base, then each joint with the joints above it
+// held), one Ceres problem over the base pose and every independent joint
+// value together. Each ICP iteration poses every link's CAD samples by the
+// forward kinematics, keeps those a scanner could see, finds their scan
+// correspondences (gated, edge weights w_edge) and solves
+//
+//   min_x  1/2 sum_links sum_i rho(r_i(x)^2),   x = (base pose, q)
+//
+// with r_i the Eq. (8) residual of costs/chain_point_cost.h (point-to-plane
+// on the CAD normal, point-to-point on prismatic bodies, as the sequential
+// stages use). The kinematic constraints hold exactly: the links move only
+// as the joints let them, mimic and loop-closure joints follow theirs, and
+// every joint stays within its limits (Ceres bounds).
+//
+// The covariance of x at the estimate (ceres::Covariance, dense SVD) scaled
+// by the residual variance s^2 = 2 cost / (residuals - parameters) gives the
+// standard deviations of the joints and the base. The residuals of
+// neighbouring samples are not independent (they share scan points and
+// the scanner's correlated noise), so these are lower bounds: they rank the
+// joints by how well the scan pins them rather than give confidence
+// intervals.
+//
+// Deterministic: the correspondence search is, Ceres runs single-threaded.
+#ifndef EDGEFIT_SOLVERS_REFINEMENT_CHAIN_REFINEMENT_H_
+#define EDGEFIT_SOLVERS_REFINEMENT_CHAIN_REFINEMENT_H_
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/correspondence/correspondence_search.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/model/surface_sampler.h"
+#include "edgefit/scan/organized_scan.h"
+#include "solvers/registration/residual_options.h"
+#include "solvers/registration/weighted_icp.h"
+
+namespace edgefit {
+
+struct ChainRefinementOptions {
+  // false: no solve, only the covariance at the given estimate.
+  bool refine = true;
+  // Iterations, gates (first gate: correspondence.max_distance, halved down
+  // to final_gate), visibility and point-to-plane as in the sequential
+  // stages; the quality fields do not apply. The weights are the search's.
+  WeightedIcpOptions icp = DefaultIcp();
+  // Compute the standard deviations at the estimate returned (one more
+  // correspondence search and a dense SVD of 6 + joints parameters).
+  bool covariance = true;
+
+  static WeightedIcpOptions DefaultIcp();
+  bool IsValid(std::string* error) const;
+};
+
+struct ChainRefinementSummary {
+  int iterations = 0;  // Ceres solves done
+  IcpStopReason stop_reason = IcpStopReason::kMaxIterations;
+  size_t correspondences = 0;  // at the estimate returned, final gate
+  double final_cost = 0.0;     // Ceres cost at the estimate returned
+  // Largest distance any sample moved from the sequential fit's estimate [m].
+  double max_displacement = 0.0;
+  // Covariance: computed (false when the problem is rank-deficient, a joint
+  // the scan does not pin, or covariance is off).
+  bool covariance_ok = false;
+  double sigma = 0.0;             // residual standard deviation s [m]
+  std::vector<double> joint_std;  // per joint, model order [rad] or [m]; NaN: not a parameter
+  Eigen::Vector3d base_rotation_std = Eigen::Vector3d::Constant(NAN);     // world axes [rad]
+  Eigen::Vector3d base_translation_std = Eigen::Vector3d::Constant(NAN);  // world axes [m]
+  double seconds = 0.0;
+};
+
+// link_samples: CAD samples of each link (indexed like model.links(), in
+// the link frame, with normals; empty links are left out); point_to_point:
+// per link, residuals without the plane (prismatic bodies). Refines
+// *T_world_base and the independent joints of *q (every joint, model order;
+// the dependent ones are resolved) in place, under the loss of `residuals`
+// (its parameterization and lambda do not apply: the joints are the
+// parameters). Errors (estimate unchanged): invalid options, sizes that do
+// not match the model, no samples.
+Status RefineChain(const KinematicModel& model, const ScanSet& scans, CorrespondenceSearch* search,
+                   const std::vector<SurfaceSamples>& link_samples,
+                   const std::vector<bool>& point_to_point, const ChainRefinementOptions& options,
+                   const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SOLVERS_REFINEMENT_CHAIN_REFINEMENT_H_

@@ -1,0 +1,71 @@
+#include "edgefit/bench/fit_errors.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace edgefit {
+
+int ToolTipLink(const KinematicModel& model) {
+  int best = model.root_link();
+  int best_revolute = -1, best_fixed = -1;
+  for (size_t l = 0; l < model.links().size(); ++l) {
+    int revolute = 0, fixed = 0;
+    for (int j = model.links()[l].parent_joint; j >= 0;) {
+      const Joint& joint = model.joints()[static_cast<size_t>(j)];
+      revolute += joint.type == JointType::kRevolute || joint.type == JointType::kContinuous;
+      fixed += joint.type == JointType::kFixed;
+      j = model.links()[static_cast<size_t>(joint.parent_link)].parent_joint;
+    }
+    if (revolute > best_revolute || (revolute == best_revolute && fixed > best_fixed)) {
+      best = static_cast<int>(l);
+      best_revolute = revolute;
+      best_fixed = fixed;
+    }
+  }
+  return best;
+}
+
+Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& q_fit,
+                        const Pose& T_world_base_fit,
+                        const std::vector<std::pair<std::string, double>>& truth_joints,
+                        const Pose& T_world_base_truth, FitErrors* errors) {
+  *errors = FitErrors();
+  std::vector<double> q_truth(model.joints().size(), 0.0);
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    const Joint& joint = model.joints()[j];
+    if (!joint.IsMoving()) continue;
+    const auto it = std::find_if(truth_joints.begin(), truth_joints.end(),
+                                 [&joint](const auto& named) { return named.first == joint.name; });
+    if (it == truth_joints.end()) {
+      return Status::Error("the truth has no value for joint '" + joint.name + "'");
+    }
+    JointError e;
+    e.name = joint.name;
+    e.prismatic = joint.type == JointType::kPrismatic;
+    e.independent = joint.IsIndependent();
+    e.truth = it->second;
+    e.fit = q_fit[j];
+    double difference = e.fit - e.truth;
+    // A scan cannot tell theta from theta + 2 pi (joints with more than a
+    // turn of range): revolute errors are taken modulo a turn.
+    if (joint.type != JointType::kPrismatic) difference = std::remainder(difference, 2.0 * M_PI);
+    e.error = std::abs(difference);
+    errors->joints.push_back(e);
+    q_truth[j] = e.truth;
+  }
+  const int tip = ToolTipLink(model);
+  if (tip >= 0) {
+    errors->tool_tip_link = model.links()[static_cast<size_t>(tip)].name;
+    const size_t t = static_cast<size_t>(tip);
+    errors->tool_tip = (model.ForwardKinematics(q_fit, T_world_base_fit)[t].translation() -
+                        model.ForwardKinematics(q_truth, T_world_base_truth)[t].translation())
+                           .norm();
+  }
+  const Pose delta = T_world_base_truth.inverse() * T_world_base_fit;
+  errors->base_translation = delta.translation().norm();
+  errors->base_rotation = Eigen::AngleAxisd(delta.linear()).angle();
+  return Status::Ok();
+}
+
+}  // namespace edgefit

@@ -1,0 +1,89 @@
+// Sec. 5.1.1 / 6.1: the rough base poses (stages.h).
+#include <chrono>
+#include <cstdio>
+
+#include "solvers/base/base_hypotheses.h"
+#include "solvers/base/base_rough.h"
+#include "solvers/base/conveyance_base_rough.h"
+#include "stages.h"
+
+namespace edgefit {
+namespace {
+
+// The rough stage of options.base.method into result->base_rough (and
+// result->arm_tips); arm tips that find no placement fall back to the
+// cross sections.
+Status RoughBase(const ScanSet& scans, const std::vector<std::vector<Eigen::Vector3f>>& normals,
+                 const KinematicModel& model, const TriangleMesh& base_mesh,
+                 const FitOptions& options, const BasePoseLoss& base_loss, const ProgressFn& say,
+                 FitResult* result) {
+  using Method = BaseOptions::Method;
+  if (options.base.method == Method::kArmTips) {
+    say("base: rough registration (arm tips in a height map, symmetry axis)");
+    ConveyanceBaseRoughOptions tips = options.base.arm_tips;
+    tips.symmetry.seed = options.seed;
+    const Status status = FitConveyanceBaseRough(scans, normals, model, base_mesh, tips, base_loss,
+                                                 &result->arm_tips);
+    if (status.ok()) {
+      result->base_rough_method = Method::kArmTips;
+      result->base_rough.T_world_base = result->arm_tips.T_world_base;
+      result->base_rough.candidates = result->arm_tips.candidates;
+      result->base_rough.floor_z = result->arm_tips.floor_z;
+      result->base_rough.seconds = result->arm_tips.seconds;
+      char line[200];
+      std::snprintf(line, sizeof(line),
+                    "base: %zu scan tips (%d paired), %zu model tips, %d matches, %d poses scored",
+                    result->arm_tips.scan_tips.size(), result->arm_tips.symmetric_scan_tips,
+                    result->arm_tips.model_tips.size(), result->arm_tips.matches,
+                    result->arm_tips.scored);
+      say(line);
+      return Status::Ok();
+    }
+    say("base: " + status.message() + "; trying cross-section corners (Sec. 5.1.1)");
+  }
+  say("base: rough registration (cross-section corners, RANSAC)");
+  BaseRoughOptions rough = options.base.cross_sections;
+  rough.seed = options.seed;
+  result->base_rough_method = Method::kCrossSections;
+  return FitBaseRough(scans, normals, base_mesh, rough, &result->base_rough);
+}
+
+}  // namespace
+
+Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
+                      const std::vector<std::vector<Eigen::Vector3f>>& normals, const Body& base,
+                      const CadSamples& cad, const JointSweep& sweep, const FitOptions& options,
+                      const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs) {
+  roughs->clear();
+  if (options.base.has_initial) {
+    Pose T_world_base = options.base.T_world_base_initial;
+    double floor_z = 0.0;
+    const Status status =
+        EstimateFloorHeight(scans, normals, Eigen::AlignedBox3d(),
+                            options.base.cross_sections.floor_normal_cos, &floor_z);
+    if (!status.ok()) return Status::Error("base hint: " + status.message());
+    T_world_base.translation().z() += floor_z;
+    roughs->push_back(T_world_base);
+    return Status::Ok();
+  }
+  const auto start = std::chrono::steady_clock::now();
+  TriangleMesh base_mesh;
+  for (size_t k = 0; k < base.links.size(); ++k) {
+    base_mesh.Append(model.links()[static_cast<size_t>(base.links[k])].mesh, base.T_body_link[k]);
+  }
+  const SurfaceSamples base_sweep =
+      BodySamples(base, cad.sweep, options.samples.max_sweep_samples);
+  auto base_loss = [&](const Pose& T) { return sweep.LossAt(base_sweep, T, options.chain.sweep); };
+  EDGEFIT_RETURN_IF_ERROR(
+      RoughBase(scans, normals, model, base_mesh, options, base_loss, say, result));
+  *roughs = RankBaseHypotheses(
+      &result->base_rough.candidates, base_mesh.BoundingBox().sizes(),
+      result->base_rough_method == BaseOptions::Method::kCrossSections, base_loss,
+      base_sweep.size(), options.base.hypotheses, say);
+  result->base_rough.T_world_base = roughs->front();
+  result->timings.base_rough =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+}  // namespace edgefit

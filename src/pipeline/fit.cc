@@ -1,0 +1,133 @@
+// Fit(): the paper's pipeline, stage by stage (fit.h).
+#include "edgefit/pipeline/fit.h"
+
+#include <glog/logging.h>
+
+#include <chrono>
+#include <utility>
+
+#include "edgefit/correspondence/correspondence_search.h"
+#include "solvers/registration/scan_visibility.h"
+#include "stages.h"
+
+namespace edgefit {
+namespace {
+
+double Since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A fit from one rough base pose: the base's precise ICP, then every joint.
+struct Attempt {
+  Pose T_world_base = Pose::Identity();
+  WeightedIcpSummary base;
+  std::vector<double> q;
+  std::vector<JointRecord> records;
+  double loss = 0.0;  // Eq. (9) of the whole model
+};
+
+}  // namespace
+
+Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& options,
+           const ProgressFn& progress, FitResult* result) {
+  CHECK(result != nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  auto say = [&progress](const std::string& line) {
+    if (progress) progress(line);
+  };
+  std::string error;
+  if (!options.IsValid(&error)) return Status::Error("robot fit: " + error);
+  if (model.root_link() < 0) return Status::Error("robot fit: the model has no root link");
+  *result = FitResult();
+  auto not_ok = [&](const std::string& message) {
+    result->ok = false;
+    result->message = message;
+    result->q = model.ZeroJoints();
+    result->timings.total = Since(start);
+    return Status::Ok();
+  };
+
+  // CAD samples: dense for the ICP stages, sparse for the sweeps.
+  SamplingOptions sampling;
+  sampling.seed = options.seed;
+  CadSamples cad;
+  sampling.spacing = options.samples.icp_spacing;
+  cad.icp = SampleModelSurfaces(model, sampling);
+  sampling.spacing = options.samples.sweep_spacing;
+  cad.sweep = SampleModelSurfaces(model, sampling);
+
+  // Sec. 4: edge weights and normals.
+  auto stage = std::chrono::steady_clock::now();
+  say("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
+  EdgeDetectionResult edges;
+  EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
+  result->timings.edges = Since(stage);
+  CorrespondenceSearch search(&scans, options.uniform_weights ? nullptr : &edges.w_edge);
+  const ScanVisibility visibility(&scans);
+  WeightedIcp icp(&scans, &search, &edges.normals, options.residuals);
+  const JointSweep sweep(&search.lattice(), &visibility);
+
+  // Sec. 5.1.1 / 6.1: the base body's rough poses.
+  const Body base = MakeBody(model, model.root_link(), -1);
+  const SurfaceSamples base_samples = BodySamples(base, cad.icp, options.samples.max_icp_samples);
+  if (base_samples.points.empty()) {
+    return Status::Error("robot fit: the base link '" +
+                         model.links()[static_cast<size_t>(base.link)].name +
+                         "' has no mesh to register");
+  }
+  std::vector<Pose> roughs;  // best first
+  const Status rough = RoughBasePoses(model, scans, edges.normals, base, cad, sweep, options, say,
+                                      result, &roughs);
+  if (!rough.ok()) return not_ok(rough.message());
+
+  // Sec. 5.1.2 and 5.2-5.3 from each rough base pose kept: the base's
+  // precise ICP, then the joints, parents first; the lowest Eq. (9) loss
+  // of the whole model wins.
+  ChainFitter chain(model, options.chain, options.samples, cad.icp, cad.sweep, &icp, &sweep, say);
+  auto fit_from = [&](const Pose& T_rough, Attempt* attempt) -> Status {
+    auto stage = std::chrono::steady_clock::now();
+    say("base: precise weighted ICP");
+    LinkState base_state;
+    base_state.T_world_link = T_rough;
+    EDGEFIT_RETURN_IF_ERROR(icp.Fit(base_samples, LinkMotion::Free(), options.base.icp,
+                                    &base_state, &attempt->base));
+    attempt->T_world_base = base_state.T_world_link;
+    result->timings.base_precise += Since(stage);
+    stage = std::chrono::steady_clock::now();
+    EDGEFIT_RETURN_IF_ERROR(
+        chain.Fit(attempt->T_world_base, &attempt->q, &attempt->records, &attempt->loss));
+    result->timings.chain += Since(stage);
+    return Status::Ok();
+  };
+  Attempt best;
+  EDGEFIT_RETURN_IF_ERROR(fit_from(roughs.front(), &best));
+  for (size_t k = 1; k < roughs.size(); ++k) {
+    say("base: the whole chain from alternative rough pose " + std::to_string(k));
+    Attempt other;
+    EDGEFIT_RETURN_IF_ERROR(fit_from(roughs[k], &other));
+    char line[240];
+    std::snprintf(line, sizeof(line),
+                  "base: alternative rough pose %zu: whole model Eq. 9 loss %.1f against %.1f%s", k,
+                  other.loss, best.loss, other.loss < best.loss ? ": taken" : "");
+    say(line);
+    if (other.loss < best.loss) {
+      best = std::move(other);
+      result->base_rough.T_world_base = roughs[k];
+    }
+  }
+  result->T_world_base = best.T_world_base;
+  result->bodies.push_back(Quality(model, base, base_samples, best.base, options.quality));
+  const Status resolved = model.ResolveDependentJoints(&best.q);
+  result->q = best.q;
+
+  // Extension: the whole chain at once, and its covariance.
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, scans, &search, cad, options, say, result));
+
+  // The verdict of every body alone at the final values.
+  EDGEFIT_RETURN_IF_ERROR(
+      JudgeQuality(model, &icp, cad, best.records, resolved, options, result));
+  result->timings.total = Since(start);
+  return Status::Ok();
+}
+
+}  // namespace edgefit

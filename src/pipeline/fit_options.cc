@@ -1,0 +1,36 @@
+#include "edgefit/pipeline/fit_options.h"
+
+namespace edgefit {
+
+WeightedIcpOptions BaseOptions::DefaultIcp() {
+  WeightedIcpOptions options;
+  options.correspondence.max_distance = 0.05;  // the rough stage's error
+  options.max_iterations = 60;
+  options.point_to_plane = true;
+  return options;
+}
+
+bool BaseOptions::IsValid(std::string* error) const {
+  return cross_sections.IsValid(error) && arm_tips.IsValid(error) && hypotheses.IsValid(error) &&
+         icp.IsValid(error);
+}
+
+bool QualityOptions::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = message;
+    return false;
+  };
+  if (!(min_inlier_share >= 0.0 && min_inlier_share <= 1.0)) {
+    return fail("min_inlier_share must be in [0, 1]");
+  }
+  if (!(max_rms > 0.0)) return fail("max_rms must be > 0");
+  return true;
+}
+
+bool FitOptions::IsValid(std::string* error) const {
+  return edges.IsValid(error) && residuals.IsValid(error) && samples.IsValid(error) &&
+         base.IsValid(error) && chain.IsValid(error) && refinement.chain.IsValid(error) &&
+         quality.IsValid(error);
+}
+
+}  // namespace edgefit

@@ -1,0 +1,71 @@
+// The quality verdict of every body at the final values (stages.h).
+#include <cstdio>
+
+#include "stages.h"
+
+namespace edgefit {
+
+BodyQuality Quality(const KinematicModel& model, const Body& body, const SurfaceSamples& samples,
+                    const WeightedIcpSummary& summary, const QualityOptions& options) {
+  BodyQuality quality;
+  quality.link = model.links()[static_cast<size_t>(body.link)].name;
+  if (body.joint >= 0) quality.joint = model.joints()[static_cast<size_t>(body.joint)].name;
+  quality.samples = samples.size();
+  quality.visible = summary.visible_points;
+  quality.inlier_share = summary.inlier_share;
+  quality.rms = summary.rms;
+  quality.icp_iterations = summary.iterations;
+  quality.ok = summary.inlier_share >= options.min_inlier_share && summary.rms <= options.max_rms;
+  return quality;
+}
+
+Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamples& cad,
+                    const std::vector<JointRecord>& records, const Status& resolved,
+                    const FitOptions& options, FitResult* result) {
+  WeightedIcpSummary summary;
+  const std::vector<Pose> T_world_link = model.ForwardKinematics(result->q, result->T_world_base);
+  for (const JointRecord& record : records) {
+    const Body body =
+        MakeBody(model, model.joints()[static_cast<size_t>(record.joint)].child_link, record.joint);
+    const SurfaceSamples samples = BodySamples(body, cad.icp, options.samples.max_icp_samples);
+    if (samples.points.empty()) continue;  // an empty link: nothing to judge
+    EDGEFIT_RETURN_IF_ERROR(icp->Evaluate(samples, T_world_link[static_cast<size_t>(body.link)],
+                                          options.chain.joint_icp, &summary));
+    BodyQuality quality = Quality(model, body, samples, summary, options.quality);
+    quality.icp_iterations = record.icp_iterations;
+    quality.symmetric = record.symmetric;
+    quality.sweep_value = record.sweep.q;
+    quality.ambiguous = record.ambiguous;
+    quality.alternative_value = record.alternative;
+    quality.ambiguity_margin = record.margin;
+    quality.ok = quality.ok && !quality.ambiguous;
+    result->bodies.push_back(quality);
+  }
+
+  result->ok = resolved.ok();
+  if (!resolved.ok()) result->message = resolved.message();
+  for (const BodyQuality& b : result->bodies) {
+    if (b.ok || !result->ok) continue;
+    result->ok = false;
+    char line[512];
+    if (b.ambiguous) {
+      std::snprintf(line, sizeof(line),
+                    "%s is ambiguous: %s = %.4f and %.4f fit the scan about equally well (Eq. 9 "
+                    "loss %.3f mm apart per sample); an attached end effector or more scan "
+                    "coverage would tell them apart",
+                    b.link.c_str(), b.joint.c_str(),
+                    result->q[static_cast<size_t>(model.JointIndex(b.joint))], b.alternative_value,
+                    1e3 * b.ambiguity_margin);
+    } else {
+      std::snprintf(line, sizeof(line),
+                    "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "
+                    "of the scanned surface (need %.0f%%), RMS %.2f mm",
+                    b.link.c_str(), 100.0 * b.inlier_share, 1e3 * options.chain.joint_icp.final_gate,
+                    100.0 * options.quality.min_inlier_share, 1e3 * b.rms);
+    }
+    result->message = line;
+  }
+  return Status::Ok();
+}
+
+}  // namespace edgefit

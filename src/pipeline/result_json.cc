@@ -1,0 +1,113 @@
+#include "edgefit/pipeline/result_json.h"
+
+#include <omp.h>
+
+#include <cmath>
+
+namespace edgefit {
+namespace {
+
+using nlohmann::json;
+
+json NumberOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+// quality.base_rough: the method that gave the rough pose and what it found.
+json BaseRoughJson(const FitResult& fit) {
+  if (fit.base_rough_method == BaseOptions::Method::kArmTips) {
+    return {{"method", "arm_tips"},
+            {"floor_z", fit.arm_tips.floor_z},
+            {"scan_tips", fit.arm_tips.scan_tips.size()},
+            {"symmetric_scan_tips", fit.arm_tips.symmetric_scan_tips},
+            {"model_tips", fit.arm_tips.model_tips.size()},
+            {"matches", fit.arm_tips.matches},
+            {"poses_scored", fit.arm_tips.scored}};
+  }
+  return {{"method", "cross_sections"},
+          {"floor_z", fit.base_rough.floor_z},
+          {"scan_corners", fit.base_rough.scan_corners},
+          {"model_corners", fit.base_rough.model_corners},
+          {"hypotheses", fit.base_rough.hypotheses},
+          {"inlier_share", fit.base_rough.inlier_share}};
+}
+
+json PerLinkJson(const FitResult& fit) {
+  json per_link = json::object();
+  for (const BodyQuality& b : fit.bodies) {
+    per_link[b.link] = {{"joint", b.joint},
+                        {"samples", b.samples},
+                        {"visible", b.visible},
+                        {"inlier_share", b.inlier_share},
+                        {"rms_m", b.rms},
+                        {"symmetric", b.symmetric},
+                        {"icp_iterations", b.icp_iterations},
+                        {"ok", b.ok}};
+    if (!b.joint.empty()) per_link[b.link]["sweep_value"] = b.sweep_value;
+    per_link[b.link]["ambiguous"] = b.ambiguous;
+    if (std::isfinite(b.ambiguity_margin)) {  // an alternative value was fitted and compared
+      per_link[b.link]["alternative_value"] = b.alternative_value;
+      per_link[b.link]["alternative_margin_m"] = b.ambiguity_margin;
+    }
+  }
+  return per_link;
+}
+
+}  // namespace
+
+json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions& options,
+                   const FitResult& fit) {
+  const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
+  const Eigen::Vector3d xyz = fit.T_world_base.translation();
+  json joints = json::object();
+  json joint_std = json::object();  // lower bounds (chain_refinement.h), null: not determined
+  const ChainRefinementSummary& chain = fit.chain_refinement;
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    if (model.joints()[j].IsMoving()) joints[model.joints()[j].name] = fit.q[j];
+    if (model.joints()[j].IsIndependent()) {
+      joint_std[model.joints()[j].name] = NumberOrNull(chain.joint_std[j]);
+    }
+  }
+  json base_std = {{"rotation_rad", json::array()}, {"xyz_m", json::array()}};
+  for (int i = 0; i < 3; ++i) {
+    base_std["rotation_rad"].push_back(NumberOrNull(chain.base_rotation_std[i]));
+    base_std["xyz_m"].push_back(NumberOrNull(chain.base_translation_std[i]));
+  }
+  const bool refined = options.refinement.chain.refine;
+  return {{"kind", AssetKindName(kind)},
+          {"base",
+           {{"xyz", {xyz.x(), xyz.y(), xyz.z()}},
+            {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
+            {"T_world_base", PoseRows(fit.T_world_base)}}},
+          {"joints", joints},
+          {"joint_std", joint_std},
+          {"base_std", base_std},
+          {"timing_s",
+           {{"edges", fit.timings.edges},
+            {"base_rough", fit.timings.base_rough},
+            {"base_precise", fit.timings.base_precise},
+            {"chain", fit.timings.chain},
+            {"refine", fit.timings.refine}}},
+          {"quality",
+           {{"per_link", PerLinkJson(fit)},
+            {"ok", fit.ok},
+            {"message", fit.message},
+            {"base_rough", BaseRoughJson(fit)},
+            {"chain_refinement",
+             {{"refined", refined},
+              {"iterations", chain.iterations},
+              {"stop_reason", IcpStopReasonName(chain.stop_reason)},
+              {"max_displacement_m", chain.max_displacement},
+              {"correspondences", chain.correspondences},
+              {"sigma_m", chain.sigma},
+              {"covariance_ok", chain.covariance_ok}}}}},
+          {"options",
+           {{"weighting", options.uniform_weights ? "uniform" : "edge"},
+            {"w_high", options.edges.w_high},
+            {"loss", options.residuals.loss},
+            {"lambda", options.residuals.lambda},
+            {"parameterization", JointParameterizationName(options.residuals.parameterization)},
+            {"refine_chain", refined},
+            {"seed", options.seed}}},
+          {"threads", omp_get_max_threads()}};
+}
+
+}  // namespace edgefit

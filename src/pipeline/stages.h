@@ -1,0 +1,57 @@
+// The stages of Fit() (fit.h) that are more than one call into solvers/:
+// each reads the options of its stage and writes its part of the result.
+// Internal to edgefit::pipeline.
+#ifndef EDGEFIT_SRC_PIPELINE_STAGES_H_
+#define EDGEFIT_SRC_PIPELINE_STAGES_H_
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "edgefit/correspondence/correspondence_search.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/model/surface_sampler.h"
+#include "edgefit/pipeline/fit.h"
+#include "solvers/joints/body.h"
+#include "solvers/joints/chain_fitter.h"
+#include "solvers/joints/joint_sweep.h"
+#include "solvers/registration/weighted_icp.h"
+
+namespace edgefit {
+
+// The CAD samples of every link (model.links() order, link frame): dense
+// for the precise stages, sparse for the sweeps.
+struct CadSamples {
+  std::vector<SurfaceSamples> icp, sweep;
+};
+
+// Sec. 5.1.1 / 6.1: the rough base poses to fit from, best first, into
+// *roughs (result->base_rough, arm_tips and base_rough_method record how):
+// from options.base's hint, or the rough stage of its method ranked by the
+// Eq. (9) loss of the base alone (base_hypotheses.h). An error means the
+// scan gave no base pose (the fit is not ok), never bad options.
+Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
+                      const std::vector<std::vector<Eigen::Vector3f>>& normals, const Body& base,
+                      const CadSamples& cad, const JointSweep& sweep, const FitOptions& options,
+                      const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs);
+
+// The whole chain refined at once (options.refinement), or its covariance
+// alone, from result->T_world_base and result->q, in place.
+Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
+                        CorrespondenceSearch* search, const CadSamples& cad,
+                        const FitOptions& options, const ProgressFn& say, FitResult* result);
+
+// The verdict of every jointed body alone at the final values (the base's
+// is in result->bodies already), appended to result->bodies; result->ok
+// and result->message from them and from `resolved` (the dependent joints).
+Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamples& cad,
+                    const std::vector<JointRecord>& records, const Status& resolved,
+                    const FitOptions& options, FitResult* result);
+
+// The quality of a body from an ICP summary at its final pose.
+BodyQuality Quality(const KinematicModel& model, const Body& body, const SurfaceSamples& samples,
+                    const WeightedIcpSummary& summary, const QualityOptions& options);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SRC_PIPELINE_STAGES_H_

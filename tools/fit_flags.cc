@@ -1,0 +1,61 @@
+#include "fit_flags.h"
+
+#include "command_line.h"
+#include "common_flags.h"
+
+DEFINE_string(kind, "auto",
+              "auto | articulated | conveyance: the pipeline (conveyance: the base's rough pose "
+              "from the arm tips, Sec. 6.1); auto takes a model whose joints are all prismatic "
+              "for a conveyance system.");
+DEFINE_string(weighting, "edge", "edge: Eq. (6) weights in every stage; uniform: all 1.");
+DEFINE_string(loss, "trivial",
+              "Loss of the precise ICP residuals: trivial, huber, cauchy, soft_l1, arctan, tukey.");
+DEFINE_double(loss_scale_mm, 5.0, "Scale of --loss [mm].");
+DEFINE_double(lambda, 1.0,
+              "Eq. (10)/(14) penalty weight relative to the data (pose_penalty only).");
+DEFINE_string(parameterization, "joint_space",
+              "Joint constraint of the precise ICP: joint_space (1 parameter) or pose_penalty "
+              "(the paper's 6-DoF pose + Eq. (10) penalties, then projection).");
+DEFINE_bool(refine_chain, true,
+            "After the sequential fit, refine the base pose and every joint together in one "
+            "Ceres problem (solvers/refinement/); --norefine_chain: the sequential fit alone.");
+DEFINE_string(init, "",
+              "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
+              "scan's floor): skips the rough base stage. Never required.");
+
+namespace edgefit::tools {
+
+Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
+  *options = FitOptionsFor(kind);
+  options->seed = FLAGS_seed;
+  options->edges.w_high = FLAGS_w_high;
+  if (FLAGS_weighting != "edge" && FLAGS_weighting != "uniform") {
+    return Status::Error("--weighting must be edge or uniform, not '" + FLAGS_weighting + "'");
+  }
+  options->uniform_weights = FLAGS_weighting == "uniform";
+  options->residuals.loss = FLAGS_loss;
+  options->residuals.loss_scale = FLAGS_loss_scale_mm * 1e-3;
+  options->residuals.lambda = FLAGS_lambda;
+  EDGEFIT_RETURN_IF_ERROR(
+      ParseJointParameterization(FLAGS_parameterization, &options->residuals.parameterization));
+  options->refinement.chain.refine = FLAGS_refine_chain;
+  if (!FLAGS_init.empty()) {
+    double x = 0.0, y = 0.0, yaw = 0.0;
+    EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));
+    options->base.has_initial = true;
+    options->base.T_world_base_initial = PoseFromXyYaw(x, y, yaw);
+  }
+  std::string error;
+  if (!options->IsValid(&error)) return Status::Error(error);
+  return Status::Ok();
+}
+
+Status CheckFitFlags() {
+  if (FLAGS_kind != "auto" && FLAGS_kind != "articulated" && FLAGS_kind != "conveyance") {
+    return Status::Error("--kind must be auto, articulated or conveyance");
+  }
+  FitOptions options;
+  return FitOptionsFromFlags(AssetKind::kArticulated, &options);
+}
+
+}  // namespace edgefit::tools

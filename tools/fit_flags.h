@@ -1,0 +1,34 @@
+// The flags of a fit, defined once (fit_flags.cc) and read into FitOptions
+// in one place for every command that fits: fit, bench (its axes override
+// some of them per run) and, through `edgefit fit` processes, batch.
+#ifndef EDGEFIT_TOOLS_FIT_FLAGS_H_
+#define EDGEFIT_TOOLS_FIT_FLAGS_H_
+
+#include <gflags/gflags.h>
+
+#include "edgefit/core/status.h"
+#include "edgefit/pipeline/asset_kind.h"
+#include "edgefit/pipeline/fit_options.h"
+
+DECLARE_string(kind);
+DECLARE_string(weighting);
+DECLARE_string(loss);
+DECLARE_double(loss_scale_mm);
+DECLARE_double(lambda);
+DECLARE_string(parameterization);
+DECLARE_bool(refine_chain);
+DECLARE_string(init);
+
+namespace edgefit::tools {
+
+// The options of a fit of `kind` (FitOptionsFor) with every fit flag
+// applied: --seed, --w_high, --weighting, --loss, --loss_scale_mm,
+// --lambda, --parameterization, --refine_chain, --init. Errors name the flag.
+Status FitOptionsFromFlags(AssetKind kind, FitOptions* options);
+
+// Whether the fit flags are valid, before any file is read (--kind too).
+Status CheckFitFlags();
+
+}  // namespace edgefit::tools
+
+#endif  // EDGEFIT_TOOLS_FIT_FLAGS_H_
