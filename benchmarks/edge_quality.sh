@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Edge detection quality against the virtual scanner's true-edge flags
-# (issue 4): precision and recall of w_high points on the modelled links, and
+# Edge detection quality against the virtual scanner's true-edge flags:
+# precision and recall of w_high points on the modelled links, and
 # the share of accessory points that get w_high, for the bundled robot and
 # conveyor and two robots of ../shared/robots, without and with accessories,
 # noise 1 mm, 3 scanners, 1.7 mm spacing. Prints a Markdown table.

@@ -1,5 +1,5 @@
-// Fit accuracy against the virtual scanner's ground truth (issues 6 and 7,
-// paper Sec. 7.3), for robots and conveyance systems (--kind): named postures and seeded random
+// Fit accuracy against the virtual scanner's ground truth (paper Sec. 7.3),
+// for robots and conveyance systems (--kind): named postures and seeded random
 // ones, each on a random base pose, scanned with and without accessories, fitted with edge and/or
 // uniform weights. Prints a row per fit, then per configuration the joint
 // errors (mean, 95th percentile, max), the base errors, failed fits (a

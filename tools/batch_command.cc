@@ -1,5 +1,5 @@
 // edgefit batch: many fits from a manifest, one `edgefit fit` process per
-// job, split into shards across processes or machines (issue 8).
+// job, split into shards across processes or machines.
 //   edgefit batch --manifest=jobs.csv [--shard=i/N] [--threads=N]
 // The manifest is CSV with a header row naming its columns:
 //   urdf, scan, out   required; several scans separated by ';'

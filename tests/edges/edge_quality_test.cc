@@ -1,8 +1,8 @@
-// Regression guard for edge quality (issue 4): the bundled robot with its gun
+// Regression guard for edge quality: the bundled robot with its gun
 // and accessories, scanned by the virtual scanner at the production density
 // (1.7 mm, 1 mm noise), edges detected with the default options, scored
-// against the true-edge flags. Thresholds are the values measured when this
-// test was written (see BENCHMARK.md, "Edge detection") less a margin; a
+// against the true-edge flags. Thresholds are the values measured on this
+// scene (see BENCHMARK.md, "Edge detection") less a margin; a
 // change that lowers precision or recall, or gives more accessory points
 // w_high, fails here.
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@
 namespace edgefit {
 namespace {
 
-// Measured 2026-11-21 with the default options: precision 0.291, recall
+// Measured with the default options: precision 0.291, recall
 // 0.132 (75412 true edges), accessory share 0.006 (1676 of 264249). The
 // thresholds keep about 15% margin (more for the small accessory share).
 constexpr double kMinPrecision = 0.25;

@@ -1,9 +1,9 @@
 // The robot pipeline end to end (paper Sec. 5) on a small virtual scan: the
 // bundled robot with its weld gun and accessories (harnesses, clamps), a
 // floor and clutter, 3 scanners, 4 mm spacing (about 1.9 M points), 1 mm
-// noise. Fails if accuracy regresses (issue bar on the full 1.7 mm scenes:
-// BENCHMARK.md), if the fit depends on the thread count, or if a scan
-// without the robot gets a confident answer.
+// noise. Fails if accuracy regresses (the accuracy bar for the full 1.7 mm
+// scenes is in BENCHMARK.md), if the fit depends on the thread count, or if
+// a scan without the robot gets a confident answer.
 #include "edgefit/pipeline/fit.h"
 
 #include <glog/logging.h>
@@ -129,10 +129,8 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
   }
   // Measured at 4 mm spacing: base 0.033 mm, 0.012 deg; revolute joints
   // mean 0.0085 deg (the balancer's included), max 0.014 deg (joint_4); gun
-  // 0.59 mm. About three times that fails. (At 9ea65f0, before
-  // point-to-plane residuals took the CAD normals: base 0.040 mm, 0.019 deg;
-  // mean 0.045 deg, max 0.18 deg; gun 0.99 mm.) The issue's bar (0.05 /
-  // 0.15 deg) is for the 1.7 mm scans of BENCHMARK.md.
+  // 0.59 mm. About three times that fails. The accuracy bar of BENCHMARK.md
+  // (revolute mean 0.05 deg, p95 0.15 deg) is for its 1.7 mm scans.
   EXPECT_LT(errors.base_translation, 0.0001);
   EXPECT_LT(errors.base_rotation, 0.03 * kDeg);
   EXPECT_LT(sum / revolute, 0.025 * kDeg);
@@ -180,7 +178,7 @@ TEST(RobotFitTest, ModelPointsAreTheRobotsPoints) {
   EXPECT_EQ(background.TotalValid(), s.scans.TotalValid() - robot_marked - other_marked);
 }
 
-// The issue's wrong input: a scan of the place without the robot must not
+// Wrong input: a scan of the place without the robot must not
 // give a confident answer.
 // --init: the hint gives x, y and yaw only; the base height comes from the
 // scan's floor, wherever the scan's origin is (here 1.3 m above the floor,

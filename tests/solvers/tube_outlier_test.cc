@@ -1,4 +1,4 @@
-// Structured outliers (issue: "a cable-like tube"): a link with a cable tube
+// Structured outliers: a link with a cable tube
 // lying on it, scanned by the virtual scanner (3 scanners, 1.7 mm spacing,
 // 1 mm noise). The tube is not in the CAD model and makes about 30 % of the
 // points near the link. With the paper's fixed gate, edge-weighted ICP
@@ -132,7 +132,8 @@ TEST(TubeOutlierTest, FixedGateEdgeWeightsBeatUniformWeights) {
 // tube's matches once the estimate is close: both weightings recover the
 // pose. (Measured: edge 0.18 mm, 0.016 deg; uniform 0.09 mm, 0.009 deg:
 // at a tight gate the edge band's fewer matches weigh most and cost
-// accuracy; issue 6 measures the same question on whole robots.)
+// accuracy; BENCHMARK.md's w_high ablation measures the same question on
+// whole robots.)
 TEST(TubeOutlierTest, ShrinkingGateRecoversThePoseWithEitherWeighting) {
   for (const bool uniform : {false, true}) {
     const Errors e = FitLink(uniform, false);

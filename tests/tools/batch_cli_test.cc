@@ -1,6 +1,6 @@
 // edgefit batch through the command line: jobs from a manifest, one fit
 // process each; a failed job is reported and the batch goes on; shards split
-// the rows; a bad manifest is bad input (issue 8).
+// the rows; a bad manifest is bad input.
 #include <string>
 
 #include "tools/cli_fixture.h"

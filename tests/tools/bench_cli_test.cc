@@ -1,6 +1,6 @@
 // edgefit bench through the command line: the paper's tables for a small
 // selection (one conveyor posture, coarse scan), CSV and JSON outputs, an
-// ablation axis and its summary, bad flags (issue 8).
+// ablation axis and its summary, bad flags.
 #include <nlohmann/json.hpp>
 #include <string>
 

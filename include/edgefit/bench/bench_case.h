@@ -35,8 +35,9 @@ BenchCase MakeBenchCase(const std::string& name, uint64_t seed, uint64_t stream,
 Status NamedPostureCases(const KinematicModel& model, const std::string& postures_file,
                          uint64_t seed, double base_range, std::vector<BenchCase>* cases);
 
-// A failed fit (issue bars): a revolute joint off by more than this [rad],
-// a prismatic one by more than this [m].
+// A failed fit (the bound at which a benchmark counts a fit as failed): a
+// revolute joint off by more than this [rad], a prismatic one by more than
+// this [m].
 constexpr double kFailedRevolute = 0.5 * M_PI / 180.0;
 constexpr double kFailedPrismatic = 0.005;
 

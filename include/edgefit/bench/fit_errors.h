@@ -1,6 +1,6 @@
 // A fit scored against the virtual scanner's ground truth (paper Sec. 7.3):
-// per-joint errors, base pose errors and the failed-fit rule of the issue
-// bar (any joint off by more than the failure threshold).
+// per-joint errors, base pose errors and the failed-fit rule (any joint off
+// by more than the failure threshold).
 #ifndef EDGEFIT_BENCH_FIT_ERRORS_H_
 #define EDGEFIT_BENCH_FIT_ERRORS_H_
 
