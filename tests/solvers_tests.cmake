@@ -11,6 +11,7 @@ edgefit_add_test(solvers_test
     solvers/height_map_test.cc
     solvers/symmetry_axis_test.cc
     solvers/body_test.cc
+    solvers/base_hypotheses_test.cc
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
 edgefit_add_test(solvers_scan_test SINGLE_PROCESS
   SOURCES solvers/tube_outlier_test.cc solvers/joint_sweep_test.cc solvers/base_rough_test.cc

@@ -7,11 +7,13 @@ if(TARGET edgefit)
   add_dependencies(cli_test edgefit)
 endif()
 
-# cmake --install gives a package that a small consumer project builds against.
+# cmake --install gives a package that a small consumer project and
+# examples/fit_scan build against.
 add_test(NAME install_consumer_test
          COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR}
                  -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
                  -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/install_consumer
                  -DGENERATOR=${CMAKE_GENERATOR}
+                 -DSANITIZE=${EDGEFIT_SANITIZE}
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/install/run_consumer_test.cmake)
 set_tests_properties(install_consumer_test PROPERTIES TIMEOUT 600)

@@ -70,7 +70,7 @@ TEST(ConveyanceFitTest, RecoversBaseAndPrismaticJointsFromTheArmTips) {
   FitResult fit;
   const Status status = Fit(s.model, s.scans, FitOptionsFor(kind), nullptr, &fit);
   ASSERT_TRUE(status.ok()) << status.message();
-  EXPECT_EQ(fit.base.method, BaseOptions::Method::kArmTips);
+  EXPECT_EQ(fit.base_rough_method, BaseOptions::Method::kArmTips);
   // Four arm tips: lifter_1's pair is mirrored about the centre axis, the
   // clamps' pair (opened 15 and 100 mm) about a line 4.25 cm beside it.
   EXPECT_GE(fit.arm_tips.scan_tips.size(), 4u);
