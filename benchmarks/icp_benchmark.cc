@@ -86,10 +86,9 @@ void BM_IcpIteration(benchmark::State& state) {
   for (auto _ : state) {
     LinkState s;
     s.q = f.robot.q[static_cast<size_t>(joint)] + 1.0 * kDeg;
-    s.T_world_link = motion.constrained()
-                         ? motion.PoseAt(s.q)
-                         : f.T_world_link[static_cast<size_t>(link)] *
-                               PoseFromXyzRpy({0.002, 0.0, 0.0}, {0.0, 0.0, 0.01});
+    s.T_world_link = motion.constrained() ? motion.PoseAt(s.q)
+                                          : f.T_world_link[static_cast<size_t>(link)] *
+                                                PoseFromXyzRpy({0.002, 0.0, 0.0}, {0.0, 0.0, 0.01});
     CHECK(icp.Fit(samples, motion, options, &s, &summary).ok());
   }
   state.counters["samples"] = static_cast<double>(samples.size());

@@ -27,15 +27,15 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/bench/bench_case.h"
+#include "edgefit/bench/fit_errors.h"
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
-#include "edgefit/scanner/random_joints.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/bench/bench_case.h"
-#include "edgefit/bench/fit_errors.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/truth.h"
 
 DEFINE_string(urdf, "", "The robot's URDF.");
@@ -253,7 +253,8 @@ int Run() {
         const std::string config = refine ? weighting + ", refine_chain" : weighting;
         FitOptions options = FitOptionsFor(kind);
         options.refinement.chain.refine = refine;
-        if (FLAGS_max_chain_samples > 0) options.samples.max_chain_samples = FLAGS_max_chain_samples;
+        if (FLAGS_max_chain_samples > 0)
+          options.samples.max_chain_samples = FLAGS_max_chain_samples;
         options.uniform_weights = weighting == "uniform";
         options.edges.w_high = FLAGS_w_high;
         status =

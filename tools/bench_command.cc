@@ -26,16 +26,16 @@
 #include <string>
 #include <vector>
 
+#include "bench_report.h"
 #include "command_line.h"
 #include "commands.h"
-#include "bench_report.h"
 #include "common_flags.h"
-#include "fit_flags.h"
 #include "costs/robust_loss.h"
+#include "edgefit/bench/bench_case.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/bench/bench_case.h"
+#include "fit_flags.h"
 
 DEFINE_string(assets, "robot,conveyor", "Bench: robot and/or conveyor.");
 DEFINE_string(robot_urdf, "assets/robot/robot.urdf", "Bench: the robot's URDF.");

@@ -1,7 +1,8 @@
 #include "common_flags.h"
 
 DEFINE_string(scan, "", "Scan file(s): .ptx, .pcd or .ply; several as a comma list.");
-DEFINE_string(urdf, "", "URDF of the equipment (meshes resolved relative to it or via package://).");
+DEFINE_string(urdf, "",
+              "URDF of the equipment (meshes resolved relative to it or via package://).");
 DEFINE_string(attach, "",
               "End effectors to attach: FILE.urdf@PARENT_LINK[:x,y,z,roll,pitch,yaw] "
               "(origin in metres and radians), several as a comma list.");
@@ -27,6 +28,8 @@ DEFINE_string(out_ply, "",
 DEFINE_string(out_json, "",
               "Output JSON. edges: a summary (points, edge_points, timing_s, options); bench: "
               "every run.");
-DEFINE_int32(scanners, 3, "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
-DEFINE_double(spacing_mm, 1.7, "Point spacing at the asset's distance [mm]; sets the angular step.");
+DEFINE_int32(scanners, 3,
+             "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
+DEFINE_double(spacing_mm, 1.7,
+              "Point spacing at the asset's distance [mm]; sets the angular step.");
 DEFINE_double(noise_mm, 1.0, "Gaussian range noise along the laser direction, sigma [mm].");

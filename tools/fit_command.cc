@@ -18,18 +18,18 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
-#include "fit_flags.h"
+#include "edgefit/bench/fit_errors.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/calibrated_urdf.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/mesh_ply.h"
 #include "edgefit/pipeline/asset_kind.h"
-#include "edgefit/bench/fit_errors.h"
-#include "edgefit/pipeline/model_points.h"
 #include "edgefit/pipeline/fit.h"
+#include "edgefit/pipeline/model_points.h"
 #include "edgefit/pipeline/result_json.h"
 #include "edgefit/scanner/truth.h"
+#include "fit_flags.h"
 
 DEFINE_string(out_joint_states, "",
               "Optional output: joint values as YAML, ROS joint_states "
@@ -208,7 +208,8 @@ int RunFit(const Command& command) {
       "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
       "%s %.2f s, total %.2f s (load %.2f s)\n",
       fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain,
-      options.refinement.chain.refine ? "refine" : "covariance", fit.timings.refine, total, load_seconds);
+      options.refinement.chain.refine ? "refine" : "covariance", fit.timings.refine, total,
+      load_seconds);
   return kExitOk;
 }
 

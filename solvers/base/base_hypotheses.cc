@@ -49,8 +49,9 @@ Pose SlideAlong(const Pose& T_world_base, const Eigen::Vector3d& axis_base, doub
   return moved(best_of(coarse - step, coarse + step, 0.2 * step));
 }
 
-std::vector<Pose> RankBaseHypotheses(std::vector<Pose>* candidates, const Eigen::Vector3d& base_size,
-                                     bool slide, const BasePoseLoss& loss, size_t samples,
+std::vector<Pose> RankBaseHypotheses(std::vector<Pose>* candidates,
+                                     const Eigen::Vector3d& base_size, bool slide,
+                                     const BasePoseLoss& loss, size_t samples,
                                      const BaseHypothesesOptions& options,
                                      const std::function<void(const std::string&)>& say) {
   const int along = base_size.x() >= base_size.y() ? 0 : 1;

@@ -56,8 +56,9 @@ Pose SlideAlong(const Pose& T_world_base, const Eigen::Vector3d& axis_base, doub
 // elongated and slide is true) ranked by `loss`; the best, then up to
 // options.alternatives distinct ones within options.alternative_loss per
 // sample (`samples`: the samples the loss scores). say: a line per step.
-std::vector<Pose> RankBaseHypotheses(std::vector<Pose>* candidates, const Eigen::Vector3d& base_size,
-                                     bool slide, const BasePoseLoss& loss, size_t samples,
+std::vector<Pose> RankBaseHypotheses(std::vector<Pose>* candidates,
+                                     const Eigen::Vector3d& base_size, bool slide,
+                                     const BasePoseLoss& loss, size_t samples,
                                      const BaseHypothesesOptions& options,
                                      const std::function<void(const std::string&)>& say);
 

@@ -19,7 +19,7 @@
 // matched pair fixes the base only to within its joints' travel. The base
 // position along the axis is searched over the stretch that most matched
 // pairs allow, scored by the caller's loss of the base alone at each pose
-// (the Eq. 9 loss of the base's CAD samples in FitRobot); the best poses
+// (the Eq. 9 loss of the base's CAD samples, given by Fit); the best poses
 // are the candidates, within a few cm for the precise ICP.
 #ifndef EDGEFIT_SOLVERS_BASE_CONVEYANCE_BASE_ROUGH_H_
 #define EDGEFIT_SOLVERS_BASE_CONVEYANCE_BASE_ROUGH_H_

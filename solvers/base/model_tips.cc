@@ -50,8 +50,9 @@ Status FindModelTips(const KinematicModel& model, const std::vector<double>& q0,
   return Status::Ok();
 }
 
-ModelTipPair RangeOfPair(const KinematicModel& model, const std::vector<double>& q0, const ModelTip& a,
-                      const ModelTip& b, const SymmetryAxis& axis, uint64_t seed) {
+ModelTipPair RangeOfPair(const KinematicModel& model, const std::vector<double>& q0,
+                         const ModelTip& a, const ModelTip& b, const SymmetryAxis& axis,
+                         uint64_t seed) {
   std::vector<int> joints;
   for (const int link : {a.link, b.link}) {
     for (int l = link; model.links()[static_cast<size_t>(l)].parent_joint >= 0;) {

@@ -54,8 +54,9 @@ Status FindModelTips(const KinematicModel& model, const std::vector<double>& q0,
 // The ranges of a model pair over the corners of the ranges of the
 // independent joints between the base and its two links (exact for chains
 // of prismatic joints; 1024 seeded corners when there are more than 10).
-ModelTipPair RangeOfPair(const KinematicModel& model, const std::vector<double>& q0, const ModelTip& a,
-                      const ModelTip& b, const SymmetryAxis& axis, uint64_t seed);
+ModelTipPair RangeOfPair(const KinematicModel& model, const std::vector<double>& q0,
+                         const ModelTip& a, const ModelTip& b, const SymmetryAxis& axis,
+                         uint64_t seed);
 
 }  // namespace edgefit
 

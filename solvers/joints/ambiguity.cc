@@ -13,7 +13,7 @@
 namespace edgefit {
 
 Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
-                         std::vector<double>* q, bool* switched) {
+                                      std::vector<double>* q, bool* switched) {
   *switched = false;
   for (size_t i = 0; i < records->size(); ++i) {
     const JointRecord& record = (*records)[i];
@@ -55,18 +55,17 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
         std::abs(other_loss - loss) / static_cast<double>(std::max<size_t>(samples, 1));
     checked.ambiguous = checked.margin < options_.ambiguity_mean_loss;
     char line[320];
-    std::snprintf(line, sizeof(line),
-                  "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s",
-                  j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin,
-                  take_other ? " (the first fit's value)" : "",
-                  checked.ambiguous ? ": AMBIGUOUS" : "");
+    std::snprintf(
+        line, sizeof(line), "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s",
+        j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin,
+        take_other ? " (the first fit's value)" : "", checked.ambiguous ? ": AMBIGUOUS" : "");
     say_(line);
   }
   return Status::Ok();
 }
 
 void ChainFitter::CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
-                  const std::vector<double>& q) const {
+                               const std::vector<double>& q) const {
   for (JointRecord& record : *records) {
     const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
     if (j.type == JointType::kPrismatic) continue;  // see ChainOptions::pinning_mean_loss

@@ -118,7 +118,7 @@ Status ChainFitter::Fit(const Pose& T_world_base, std::vector<double>* q,
 }
 
 Status ChainFitter::FitJoints(const Pose& T_world_base, std::vector<double>* q,
-                 std::vector<JointRecord>* records) {
+                              std::vector<JointRecord>* records) {
   *q = model_.ZeroJoints();
   (void)model_.ResolveDependentJoints(q);  // best effort until every joint is fitted
   records->clear();
@@ -150,7 +150,7 @@ Status ChainFitter::FitJoints(const Pose& T_world_base, std::vector<double>* q,
 }
 
 Status ChainFitter::RefineSubtrees(const Pose& T_world_base, size_t first, int only_below,
-                      std::vector<JointRecord>* records, std::vector<double>* q) {
+                                   std::vector<JointRecord>* records, std::vector<double>* q) {
   const std::vector<bool> in_scope = SubtreeMask(only_below);
   for (size_t i = first; i < records->size(); ++i) {
     const JointRecord& record = (*records)[i];
@@ -181,7 +181,7 @@ Status ChainFitter::RefineSubtrees(const Pose& T_world_base, size_t first, int o
 }
 
 Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, JointRecord* record,
-                bool resweep) {
+                             bool resweep) {
   const Joint& j = model_.joints()[static_cast<size_t>(record->joint)];
   const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
   const LinkMotion motion =
@@ -287,7 +287,7 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
 }
 
 double ChainFitter::SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,
-                   size_t* samples) const {
+                                size_t* samples) const {
   const std::vector<Pose> T_world_link = model_.ForwardKinematics(q, T_world_base);
   double loss = 0.0;
   *samples = 0;

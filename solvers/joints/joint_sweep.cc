@@ -61,7 +61,8 @@ double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_lin
       loss += unmatched;
       continue;
     }
-    const double w = std::max(1.0, static_cast<double>(m.weight));  // uniform: a search without weights
+    const double w =
+        std::max(1.0, static_cast<double>(m.weight));  // uniform: a search without weights
     loss += SweepLoss(static_cast<double>(m.distance), w, options.tau_dist);
   }
   return loss;

@@ -53,9 +53,9 @@ class ChainKinematics final : public LinkPoseSource, public ceres::EvaluationCal
 
   const KinematicModel* model_;
   const Pose T_world_base_anchor_;
-  const double* delta_base_;      // parameter block, borrowed
-  const double* q_;               // parameter block, borrowed
-  std::vector<double> q_full_;    // the last resolved values (warm start)
+  const double* delta_base_;    // parameter block, borrowed
+  const double* q_;             // parameter block, borrowed
+  std::vector<double> q_full_;  // the last resolved values (warm start)
   std::vector<int> independent_;
   std::vector<double> key_;  // the parameters links_ holds, NaN: none
   std::vector<LinkPoseJacobian> links_;

@@ -239,7 +239,8 @@ void Covariance(double cost, ChainProblem* chain, ChainRefinementSummary* summar
 Status RefineChain(const KinematicModel& model, const ScanSet& scans, CorrespondenceSearch* search,
                    const std::vector<SurfaceSamples>& link_samples,
                    const std::vector<bool>& point_to_point, const ChainRefinementOptions& options,
-                   const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary) {
+                   const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q,
+                   ChainRefinementSummary* summary) {
   CHECK(search != nullptr && T_world_base != nullptr && q != nullptr && summary != nullptr);
   const auto start = std::chrono::steady_clock::now();
   std::string error;

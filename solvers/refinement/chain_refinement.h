@@ -82,7 +82,8 @@ struct ChainRefinementSummary {
 Status RefineChain(const KinematicModel& model, const ScanSet& scans, CorrespondenceSearch* search,
                    const std::vector<SurfaceSamples>& link_samples,
                    const std::vector<bool>& point_to_point, const ChainRefinementOptions& options,
-                   const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary);
+                   const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q,
+                   ChainRefinementSummary* summary);
 
 }  // namespace edgefit
 

@@ -71,15 +71,13 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
   for (size_t k = 0; k < base.links.size(); ++k) {
     base_mesh.Append(model.links()[static_cast<size_t>(base.links[k])].mesh, base.T_body_link[k]);
   }
-  const SurfaceSamples base_sweep =
-      BodySamples(base, cad.sweep, options.samples.max_sweep_samples);
+  const SurfaceSamples base_sweep = BodySamples(base, cad.sweep, options.samples.max_sweep_samples);
   auto base_loss = [&](const Pose& T) { return sweep.LossAt(base_sweep, T, options.chain.sweep); };
   EDGEFIT_RETURN_IF_ERROR(
       RoughBase(scans, normals, model, base_mesh, options, base_loss, say, result));
-  *roughs = RankBaseHypotheses(
-      &result->base_rough.candidates, base_mesh.BoundingBox().sizes(),
-      result->base_rough_method == BaseOptions::Method::kCrossSections, base_loss,
-      base_sweep.size(), options.base.hypotheses, say);
+  *roughs = RankBaseHypotheses(&result->base_rough.candidates, base_mesh.BoundingBox().sizes(),
+                               result->base_rough_method == BaseOptions::Method::kCrossSections,
+                               base_loss, base_sweep.size(), options.base.hypotheses, say);
   result->base_rough.T_world_base = roughs->front();
   result->timings.base_rough =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -76,8 +76,8 @@ Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& 
                          "' has no mesh to register");
   }
   std::vector<Pose> roughs;  // best first
-  const Status rough = RoughBasePoses(model, scans, edges.normals, base, cad, sweep, options, say,
-                                      result, &roughs);
+  const Status rough =
+      RoughBasePoses(model, scans, edges.normals, base, cad, sweep, options, say, result, &roughs);
   if (!rough.ok()) return not_ok(rough.message());
 
   // Sec. 5.1.2 and 5.2-5.3 from each rough base pose kept: the base's
@@ -89,8 +89,8 @@ Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& 
     say("base: precise weighted ICP");
     LinkState base_state;
     base_state.T_world_link = T_rough;
-    EDGEFIT_RETURN_IF_ERROR(icp.Fit(base_samples, LinkMotion::Free(), options.base.icp,
-                                    &base_state, &attempt->base));
+    EDGEFIT_RETURN_IF_ERROR(
+        icp.Fit(base_samples, LinkMotion::Free(), options.base.icp, &base_state, &attempt->base));
     attempt->T_world_base = base_state.T_world_link;
     result->timings.base_precise += Since(stage);
     stage = std::chrono::steady_clock::now();
@@ -124,8 +124,7 @@ Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& 
   EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, scans, &search, cad, options, say, result));
 
   // The verdict of every body alone at the final values.
-  EDGEFIT_RETURN_IF_ERROR(
-      JudgeQuality(model, &icp, cad, best.records, resolved, options, result));
+  EDGEFIT_RETURN_IF_ERROR(JudgeQuality(model, &icp, cad, best.records, resolved, options, result));
   result->timings.total = Since(start);
   return Status::Ok();
 }

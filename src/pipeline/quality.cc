@@ -60,7 +60,8 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
       std::snprintf(line, sizeof(line),
                     "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "
                     "of the scanned surface (need %.0f%%), RMS %.2f mm",
-                    b.link.c_str(), 100.0 * b.inlier_share, 1e3 * options.chain.joint_icp.final_gate,
+                    b.link.c_str(), 100.0 * b.inlier_share,
+                    1e3 * options.chain.joint_icp.final_gate,
                     100.0 * options.quality.min_inlier_share, 1e3 * b.rms);
     }
     result->message = line;

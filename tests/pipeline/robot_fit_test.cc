@@ -4,8 +4,6 @@
 // noise. Fails if accuracy regresses (the accuracy bar for the full 1.7 mm
 // scenes is in BENCHMARK.md), if the fit depends on the thread count, or if
 // a scan without the robot gets a confident answer.
-#include "edgefit/pipeline/fit.h"
-
 #include <glog/logging.h>
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -15,10 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/bench/fit_errors.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
-#include "edgefit/bench/fit_errors.h"
+#include "edgefit/pipeline/fit.h"
 #include "edgefit/pipeline/model_points.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/scanner_placement.h"

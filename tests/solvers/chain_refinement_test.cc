@@ -167,8 +167,7 @@ TEST(ChainRefinementTest, ARobustLossTakesOneSamplePerBlockAndAgrees) {
   ResidualOptions huber;
   huber.loss = "huber";  // 5 mm: quadratic for the scan's 1 mm noise
   ChainRefinementSummary summary;
-  ASSERT_TRUE(
-      Refine(s.samples, ChainRefinementOptions(), &T_world_base, &q, &summary, huber).ok());
+  ASSERT_TRUE(Refine(s.samples, ChainRefinementOptions(), &T_world_base, &q, &summary, huber).ok());
   EXPECT_EQ(summary.stop_reason, IcpStopReason::kConverged);
   for (const int j : s.model.IndependentJoints()) {
     const size_t k = static_cast<size_t>(j);

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/bench/fit_errors.h"
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
-#include "edgefit/bench/fit_errors.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
 

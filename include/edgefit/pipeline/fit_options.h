@@ -29,7 +29,7 @@ struct BaseOptions {
   // find no placement, the cross sections are tried.
   enum class Method { kCrossSections, kArmTips };
   Method method = Method::kCrossSections;
-  BaseRoughOptions cross_sections;     // its seed is FitOptions::seed
+  BaseRoughOptions cross_sections;      // its seed is FitOptions::seed
   ConveyanceBaseRoughOptions arm_tips;  // its symmetry seed is FitOptions::seed
   BaseHypothesesOptions hypotheses;
   // Sec. 5.1.2: the base's precise ICP (6-DoF); its first gate covers the

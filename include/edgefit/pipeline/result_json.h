@@ -16,8 +16,8 @@ namespace edgefit {
 // The result of a fit of `model` (kind, options: as fitted). timing_s
 // holds the stages; the caller adds "load" and "total" (reading the files
 // and writing the outputs are its own), and "errors" against a truth.
-nlohmann::json FitResultJson(const KinematicModel& model, AssetKind kind,
-                             const FitOptions& options, const FitResult& fit);
+nlohmann::json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions& options,
+                             const FitResult& fit);
 
 }  // namespace edgefit
 
