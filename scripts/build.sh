@@ -13,7 +13,12 @@ while [[ $# -gt 0 ]]; do
   cmake_args+=("$1"); shift
 done
 launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Paths relative to the checkout, and the build folder left out of the
+  # hash: a fresh clone elsewhere (CI's) reuses the objects built here.
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
+fi
 generator=()
 if command -v ninja >/dev/null && [[ ! -f "$build_dir/Makefile" ]]; then generator=(-G Ninja); fi
 mkdir -p "$build_dir"
