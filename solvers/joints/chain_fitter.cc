@@ -160,9 +160,8 @@ Status ChainFitter::RefineSubtrees(const Pose& T_world_base, size_t first, int o
     const LinkMotion motion =
         LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
     const Body subtree = MakeSubtree(model_, j.child_link, record.joint, T_world_link);
-    SurfaceSamples subtree_icp;
-    AppendBodySamples(subtree, icp_samples_, Pose::Identity(), &subtree_icp);
-    ThinSamples(samples_.max_subtree_icp_samples, &subtree_icp);
+    const SurfaceSamples subtree_icp =
+        BodySamples(subtree, icp_samples_, samples_.max_subtree_icp_samples);
     if (subtree_icp.points.empty()) continue;
     const double before = (*q)[static_cast<size_t>(record.joint)];
     LinkState state;

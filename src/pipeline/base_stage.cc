@@ -79,8 +79,7 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
                                result->base_rough_method == BaseOptions::Method::kCrossSections,
                                base_loss, base_sweep.size(), options.base.hypotheses, say);
   result->base_rough.T_world_base = roughs->front();
-  result->timings.base_rough =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result->timings.base_rough = Since(start);
   return Status::Ok();
 }
 

@@ -13,10 +13,6 @@
 namespace edgefit {
 namespace {
 
-double Since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // A fit from one rough base pose: the base's precise ICP, then every joint.
 struct Attempt {
   Pose T_world_base = Pose::Identity();

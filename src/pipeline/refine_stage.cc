@@ -30,8 +30,7 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples, point_to_point,
                                       refinement, options.residuals, &result->T_world_base,
                                       &result->q, &result->chain_refinement));
-  result->timings.refine =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result->timings.refine = Since(start);
   if (refinement.refine) {
     char line[200];
     std::snprintf(line, sizeof(line),

@@ -5,6 +5,7 @@
 #define EDGEFIT_SRC_PIPELINE_STAGES_H_
 
 #include <Eigen/Core>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,11 @@
 #include "solvers/registration/weighted_icp.h"
 
 namespace edgefit {
+
+// Seconds since `start` (the stages' timings).
+inline double Since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // The CAD samples of every link (model.links() order, link frame): dense
 // for the precise stages, sparse for the sweeps.
