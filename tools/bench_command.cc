@@ -65,6 +65,9 @@ DEFINE_string(refine_chains, "",
               "Bench ablation: off and/or on: the whole-chain refinement (default: "
               "--refine_chain).");
 DEFINE_string(noises_mm, "", "Bench ablation: range noise sigmas [mm] (default: --noise_mm).");
+DEFINE_string(sensors, "ideal",
+              "Bench axis: sensors (as edgefit scan --sensor): ideal, realistic, or effects "
+              "joined by '+' (mixed_pixels, incidence, stations, as_built, jackets).");
 DEFINE_string(scanner_counts, "", "Bench ablation: scanner counts (default: --scanners).");
 DEFINE_int32(repeats, 1,
              "Bench: each scene with seeds seed .. seed+repeats-1 (other base poses, scans and "
@@ -174,9 +177,16 @@ int RunBench(const Command& command) {
   if (!(FLAGS_spacing_mm > 0.0) || FLAGS_repeats < 1) {
     return BadInput(command, "--spacing_mm must be > 0 and --repeats >= 1");
   }
+  const std::vector<std::string> sensors = SplitList(FLAGS_sensors);
+  for (const std::string& sensor : sensors) {
+    AssetScanOptions probe;
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, SensorOptionsFromFlags(sensor, &probe));
+  }
+  if (sensors.empty()) return BadInput(command, "--sensors: give at least one sensor");
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
 
   Axes axes;
+  axes.sensor = sensors.size() > 1;
   axes.noise = noises.size() > 1;
   axes.scanners = scanner_counts.size() > 1;
   axes.repeat = FLAGS_repeats > 1;
@@ -218,15 +228,19 @@ int RunBench(const Command& command) {
       for (const BenchCase& c : cases) {
         if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
         for (const std::string& scenery : sceneries)
+          for (const std::string& sensor : sensors)
           for (const double noise : noises)
             for (const double scanners : scanner_counts) {
-              const ScanSetting scan_setting{scenery, noise, static_cast<int>(scanners), repeat};
+              const ScanSetting scan_setting{scenery, noise, static_cast<int>(scanners), repeat,
+                                             sensor};
               AssetScanOptions scan_options;
+              EDGEFIT_RETURN_IF_ERROR_EXIT(command, SensorOptionsFromFlags(sensor, &scan_options));
               scan_options.accessories = scenery == "with";
               scan_options.scanners = scan_setting.scanners;
               scan_options.scan.spacing = 1e-3 * FLAGS_spacing_mm;
               scan_options.scan.noise_sigma = 1e-3 * noise;
-              const std::string scene = asset + " " + c.name + ", " + scenery + " accessories" +
+              const std::string scene = asset + " " + c.name + ", " + scenery + " accessories, " +
+                                        sensor + " sensor" +
                                         (axes.repeat ? ", seed " + std::to_string(seed) : "");
               Progress("bench: scanning " + scene);
               VirtualScan scan;
@@ -312,6 +326,7 @@ Command BenchCommand() {
       "                [--losses=trivial,huber,cauchy,soft_l1,tukey] [--sweep_steps_deg=0.5,1,2]\n"
       "                [--searches=lattice,kdtree] [--refine_chains=off,on]\n"
       "                [--noises_mm=0,1,2,3] [--scanner_counts=1,2,3,4] [--repeats=N]\n"
+      "                [--sensors=ideal,realistic,stations+as_built] [--jackets]\n"
       "Run from the source folder (the defaults name assets/...). "
       "benchmarks/plot_ablation.py draws error against w_high or lambda from --out_json.",
       {"assets",         "robot_urdf",    "robot_attach",
@@ -324,7 +339,8 @@ Command BenchCommand() {
        "out_csv",        "out_json",      "spacing_mm",
        "noise_mm",       "scanners",      "seed",
        "w_high",         "lambda",        "loss",
-       "refine_chain",   "threads"},
+       "refine_chain",   "threads",       "sensors",
+       "beam",           "jackets"},
       RunBench};
 }
 

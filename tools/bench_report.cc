@@ -20,6 +20,7 @@ std::string Number(double value) {
 
 std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& fit) {
   std::vector<std::string> parts;
+  if (axes.sensor) parts.push_back("sensor=" + scan.sensor);
   if (axes.noise) parts.push_back("noise=" + Number(scan.noise_mm) + "mm");
   if (axes.scanners) parts.push_back("scanners=" + std::to_string(scan.scanners));
   if (axes.w_high) parts.push_back("w_high=" + Number(fit.w_high));
@@ -143,6 +144,7 @@ nlohmann::json RunJson(const Run& run) {
            {{"noise_mm", run.scan.noise_mm},
             {"scanners", run.scan.scanners},
             {"repeat", run.scan.repeat},
+            {"sensor", run.scan.sensor},
             {"w_high", run.fit.w_high},
             {"lambda", run.fit.lambda},
             {"loss", run.fit.loss},

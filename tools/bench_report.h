@@ -18,6 +18,7 @@ struct ScanSetting {
   double noise_mm = 1.0;
   int scanners = 3;
   int repeat = 0;
+  std::string sensor = "ideal";  // edgefit scan --sensor
 };
 
 // A fit of the product of the fit axes.
@@ -41,7 +42,7 @@ struct Run {
 
 // The axes given more than one value, for the labels.
 struct Axes {
-  bool noise = false, scanners = false, repeat = false;
+  bool noise = false, scanners = false, repeat = false, sensor = false;
   bool w_high = false, lambda = false, loss = false, sweep_step = false, search = false,
        refine = false;
 };

@@ -1,5 +1,7 @@
 #include "common_flags.h"
 
+#include "edgefit/scanner/asset_scan.h"
+
 DEFINE_string(scan, "", "Scan file(s): .ptx, .pcd or .ply; several as a comma list.");
 DEFINE_string(urdf, "",
               "URDF of the equipment (meshes resolved relative to it or via package://).");
@@ -33,3 +35,21 @@ DEFINE_int32(scanners, 3,
 DEFINE_double(spacing_mm, 1.7,
               "Point spacing at the asset's distance [mm]; sets the angular step.");
 DEFINE_double(noise_mm, 1.0, "Gaussian range noise along the laser direction, sigma [mm].");
+DEFINE_string(beam, "faro_focus",
+              "The beam of a sensor with mixed pixels: faro_focus (2.5 mm exit, 0.19 mrad), "
+              "leica_p40 (3.5 mm, 0.23 mrad), zf_5016 (0.4 mm, 0.6 mrad).");
+DEFINE_bool(jackets, false,
+            "Protective jackets 3-8 mm over 40-80 % of the upper arm and the forearm.");
+
+namespace edgefit::tools {
+
+Status SensorOptionsFromFlags(const std::string& sensor, AssetScanOptions* options) {
+  EDGEFIT_RETURN_IF_ERROR(ApplySensorPreset(sensor, options).WithContext("--sensor"));
+  if (options->scan.beam.enabled()) {
+    EDGEFIT_RETURN_IF_ERROR(BeamPreset(FLAGS_beam, &options->scan.beam).WithContext("--beam"));
+  }
+  if (FLAGS_jackets) options->jackets.enabled = true;
+  return Status::Ok();
+}
+
+}  // namespace edgefit::tools

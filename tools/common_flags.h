@@ -5,6 +5,8 @@
 
 #include <gflags/gflags.h>
 
+#include <string>
+
 DECLARE_string(scan);
 DECLARE_string(urdf);
 DECLARE_string(attach);
@@ -20,5 +22,17 @@ DECLARE_string(out_json);
 DECLARE_int32(scanners);
 DECLARE_double(spacing_mm);
 DECLARE_double(noise_mm);
+DECLARE_string(beam);
+DECLARE_bool(jackets);
+
+namespace edgefit {
+struct AssetScanOptions;
+class Status;
+namespace tools {
+// Applies `sensor` (ApplySensorPreset), then --beam (when the sensor has a
+// footprint) and --jackets.
+Status SensorOptionsFromFlags(const std::string& sensor, AssetScanOptions* options);
+}  // namespace tools
+}  // namespace edgefit
 
 #endif  // EDGEFIT_TOOLS_COMMON_FLAGS_H_

@@ -37,6 +37,10 @@ DEFINE_string(scanner_at, "",
               "separated by ':'. Without a yaw the scanner faces the asset.");
 DEFINE_double(max_range_m, 60.0, "Maximum range [m]; farther rays are misses.");
 DEFINE_bool(full_dome, false, "Scan 360 degrees in azimuth instead of a window around the asset.");
+DEFINE_string(sensor, "ideal",
+              "ideal, realistic (mixed pixels, incidence noise and dropouts, station residuals, "
+              "as-built surfaces), or effects joined by '+': mixed_pixels, incidence, stations, "
+              "as_built, jackets.");
 DEFINE_int32(clutter, 4, "Clutter objects (pillars, boxes, a fence panel) away from the asset.");
 
 namespace edgefit::tools {
@@ -183,6 +187,7 @@ int RunScan(const Command& command) {
   options.scan.max_range = FLAGS_max_range_m;
   options.scan.full_dome = FLAGS_full_dome;
   options.seed = FLAGS_seed;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, SensorOptionsFromFlags(FLAGS_sensor, &options));
   // The window covers every non-background mesh: the model and its accessories.
   Progress("scan: casting rays from " +
            std::to_string(options.T_world_scanners.empty() ? FLAGS_scanners
@@ -210,6 +215,19 @@ int RunScan(const Command& command) {
   truth.settings = MakeTruthSettings(scan_options, static_cast<int>(T_world_scanners.size()),
                                      FLAGS_accessories,
                                      FLAGS_random_pose);
+  truth.sensor.name = FLAGS_sensor + (FLAGS_jackets ? "+jackets" : "");
+  truth.sensor.beam = options.scan.beam;
+  truth.sensor.range_noise = options.scan.range_noise;
+  truth.sensor.as_built = options.as_built;
+  truth.sensor.station_residuals = options.station_residuals;
+  if (options.jackets.enabled) {
+    for (int link : JacketLinks(model, options.jackets)) {
+      truth.sensor.jackets.push_back(model.links()[link].name);
+    }
+  }
+  for (const OrganizedScan& scan : result.scans.scans) {
+    truth.sensor.T_world_scanners_written.push_back(scan.T_world_scanner());
+  }
   truth.counts = CountLabels(result, model);
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, WriteOutputs(truth, result));
@@ -236,13 +254,14 @@ Command ScanCommand() {
           "--posture=P.json:NAME | --random_pose --seed=N)\n"
           "               [--base=x,y,yaw_deg] [--accessories] [--scanners=3 | --scanner_at=x,y,z[,yaw]:...]\n"
           "               [--spacing_mm=1.7]"
-          " [--noise_mm=1] --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]\n"
+          " [--noise_mm=1] [--sensor=ideal|realistic] [--beam=faro_focus] [--jackets]\n"
+          "               --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]\n"
           "Example:\n"
           "  edgefit scan --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
           "    --posture=assets/robot/postures.json:weld_low --accessories --seed=7 \\\n"
           "    --out=robot.ptx --truth=robot_truth.json --labels=robot_labels.bin",
           {"urdf", "attach", "joints", "posture", "random_pose", "seed", "base", "accessories",
-           "scanners", "scanner_at", "spacing_mm", "noise_mm", "max_range_m", "full_dome", "clutter", "out",
+           "scanners", "scanner_at", "spacing_mm", "noise_mm", "sensor", "beam", "jackets", "max_range_m", "full_dome", "clutter", "out",
            "truth", "labels", "threads"},
           &RunScan};
 }

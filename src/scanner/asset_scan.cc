@@ -14,6 +14,40 @@ uint64_t AssetScanSeed(uint64_t seed, AssetScanStream stream) {
   return SplitMix64::StreamSeed(seed, static_cast<uint64_t>(stream));
 }
 
+Status ApplySensorPreset(const std::string& name, AssetScanOptions* options) {
+  if (name.empty()) return Status::Error("empty sensor name");
+  size_t start = 0;
+  while (start <= name.size()) {
+    size_t end = name.find('+', start);
+    if (end == std::string::npos) end = name.size();
+    const std::string item = name.substr(start, end - start);
+    start = end + 1;
+    const bool all = item == "realistic";
+    if (item == "ideal") {
+      EDGEFIT_RETURN_IF_ERROR(BeamPreset("ideal", &options->scan.beam));
+      options->scan.range_noise.signal_model = false;
+      options->station_residuals.enabled = false;
+      options->as_built.enabled = false;
+      options->jackets.enabled = false;
+      continue;
+    }
+    if (!all && item != "mixed_pixels" && item != "incidence" && item != "stations" &&
+        item != "as_built" && item != "jackets") {
+      return Status::Error("unknown sensor '" + item +
+                           "' (ideal, realistic, or effects joined by '+': mixed_pixels, "
+                           "incidence, stations, as_built, jackets)");
+    }
+    if ((all || item == "mixed_pixels") && !options->scan.beam.enabled()) {
+      EDGEFIT_RETURN_IF_ERROR(BeamPreset("faro_focus", &options->scan.beam));
+    }
+    if (all || item == "incidence") options->scan.range_noise.signal_model = true;
+    if (all || item == "stations") options->station_residuals.enabled = true;
+    if (all || item == "as_built") options->as_built.enabled = true;
+    if (item == "jackets") options->jackets.enabled = true;
+  }
+  return Status::Ok();
+}
+
 Status ScanAsset(const KinematicModel& model, const std::vector<double>& q,
                  const Pose& T_world_base, const AssetScanOptions& options, VirtualScan* result,
                  std::vector<Pose>* T_world_scanners) {
@@ -31,6 +65,20 @@ Status ScanAsset(const KinematicModel& model, const std::vector<double>& q,
 
   Scene scene;
   AddModelToScene(model, T_world_link, &scene);
+  if (options.as_built.enabled) {
+    AsBuiltOptions as_built = options.as_built;
+    as_built.seed = AssetScanSeed(options.seed, AssetScanStream::kAsBuilt);
+    std::string error;
+    if (!as_built.IsValid(&error)) return Status::Error("asset scan: " + error);
+    for (SceneMesh& mesh : scene.meshes) {
+      if (mesh.link >= 0) ApplyAsBuilt(as_built, mesh.link, T_world_link[mesh.link], &mesh.mesh_world);
+    }
+  }
+  if (options.jackets.enabled) {
+    JacketOptions jackets = options.jackets;
+    jackets.seed = AssetScanSeed(options.seed, AssetScanStream::kJackets);
+    EDGEFIT_RETURN_IF_ERROR(AddJackets(model, T_world_link, jackets, &scene));
+  }
   if (options.accessories) {
     AccessoryOptions accessories;
     accessories.seed = AssetScanSeed(options.seed, AssetScanStream::kAccessories);
@@ -50,7 +98,13 @@ Status ScanAsset(const KinematicModel& model, const std::vector<double>& q,
   }
   VirtualScanOptions scan = options.scan;
   scan.seed = AssetScanSeed(options.seed, AssetScanStream::kNoise);
+  std::string error;
+  if (!options.station_residuals.IsValid(&error)) return Status::Error("asset scan: " + error);
   EDGEFIT_RETURN_IF_ERROR(ScanScene(scene, scanners, scan, result));
+  StationResidualOptions stations = options.station_residuals;
+  stations.seed = AssetScanSeed(options.seed, AssetScanStream::kStations);
+  const std::vector<Pose> written = PerturbStationPoses(scanners, stations);
+  for (size_t i = 0; i < written.size(); ++i) result->scans.scans[i].set_T_world_scanner(written[i]);
   if (T_world_scanners != nullptr) *T_world_scanners = std::move(scanners);
   return Status::Ok();
 }

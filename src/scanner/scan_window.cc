@@ -33,6 +33,11 @@ bool VirtualScanOptions::IsValid(std::string* error) const {
     return fail("sharp edge angle must be in (0, 180] degrees");
   }
   if (max_cells_per_scan < 1) return fail("max_cells_per_scan must be >= 1");
+  std::string part;
+  if (!beam.IsValid(&part) || !range_noise.IsValid(&part)) {
+    if (error != nullptr) *error = part;
+    return false;
+  }
   return true;
 }
 

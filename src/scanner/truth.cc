@@ -26,7 +26,51 @@ bool PoseFromJson(const Json& j, Pose* T) {
   return true;
 }
 
+Json PoseList(const std::vector<Pose>& poses) {
+  Json list = Json::array();
+  for (const Pose& T : poses) list.push_back(PoseRows(T));
+  return list;
+}
+
+Json SensorJson(const TruthSensor& s, const LabelCounts& c) {
+  const BeamOptions& b = s.beam;
+  const RangeNoiseOptions& n = s.range_noise;
+  const AsBuiltOptions& a = s.as_built;
+  const StationResidualOptions& r = s.station_residuals;
+  Json j;
+  j["name"] = s.name;
+  j["beam"] = {{"sub_rays", b.sub_rays},
+               {"exit_diameter", b.exit_diameter},
+               {"divergence", b.divergence},
+               {"mixed_return", b.mixed_return == MixedReturn::kMean ? "mean" : "strongest"},
+               {"mixed_depth", b.mixed_depth}};
+  j["range_noise"] = {{"signal_model", n.signal_model},
+                      {"reference_reflectance", n.reference_reflectance},
+                      {"max_factor", n.max_factor},
+                      {"dropout_signal_none", n.dropout_signal_none},
+                      {"dropout_signal_full", n.dropout_signal_full}};
+  j["as_built"] = {{"enabled", a.enabled},
+                   {"amplitude_min", a.amplitude_min},
+                   {"amplitude_max", a.amplitude_max},
+                   {"wavelength_min", a.wavelength_min},
+                   {"wavelength_max", a.wavelength_max}};
+  j["jackets"] = s.jackets;
+  j["station_residuals"] = {{"enabled", r.enabled},
+                            {"translation_min", r.translation_min},
+                            {"translation_max", r.translation_max},
+                            {"rotation_min", r.rotation_min},
+                            {"rotation_max", r.rotation_max}};
+  j["scanners_written"] = PoseList(s.T_world_scanners_written);
+  j["counts"] = {{"mixed_pixel", c.mixed_pixel}, {"jacket", c.jacket}};
+  return j;
+}
+
 }  // namespace
+
+bool TruthSensor::realistic() const {
+  return beam.enabled() || range_noise.signal_model || as_built.enabled || !jackets.empty() ||
+         station_residuals.enabled;
+}
 
 std::vector<std::pair<std::string, double>> NamedJointValues(const KinematicModel& model,
                                                              const std::vector<double>& q) {
@@ -59,6 +103,8 @@ LabelCounts CountLabels(const VirtualScan& scan, const KinematicModel& model) {
       ++counts.cells;
       const uint16_t cls = label & kLabelMask;
       if (label & kTrueEdgeFlag) ++counts.true_edge;
+      if (label & kMixedPixelFlag) ++counts.mixed_pixel;
+      if (label & kJacketFlag) ++counts.jacket;
       if (cls == kLabelMissing) {
         ++counts.missing;
         continue;
@@ -85,7 +131,8 @@ const char* LabelsFormatDescription() {
   return "little-endian: 'EFLB', uint32 version=1, uint32 scans S, S x (uint32 rows, uint32 "
          "cols), then per scan in file order rows*cols uint16 in the scan file's point order; "
          "0 missing, 1 background, 2 accessory, 3+k link k (model links order), "
-         "| 0x8000 within true_edge_distance of a sharp link edge";
+         "| 0x8000 within true_edge_distance of a sharp link edge, | 0x4000 mixed pixel, "
+         "| 0x2000 protective jacket";
 }
 
 Status WriteTruthJson(const std::string& path, const Truth& truth) {
@@ -112,6 +159,7 @@ Status WriteTruthJson(const std::string& path, const Truth& truth) {
                  {"background", c.background}, {"accessory", c.accessory}, {"link", c.link},
                  {"true_edge", c.true_edge},   {"per_link", per_link}};
   j["labels_format"] = LabelsFormatDescription();
+  if (truth.sensor.realistic()) j["sensor"] = SensorJson(truth.sensor, c);
   return WriteStringAtomically(path, j.dump(2) + "\n");
 }
 
@@ -173,6 +221,22 @@ Status ReadTruthJson(const std::string& path, Truth* truth) {
     t.settings.full_dome = flag("full_dome");
     t.settings.max_range = number("max_range", 0.0);
     t.settings.true_edge_distance = number("true_edge_distance", 0.0);
+  }
+  if (j.contains("sensor") && j["sensor"].is_object()) {
+    const Json& s = j["sensor"];
+    if (s.contains("name") && s["name"].is_string()) t.sensor.name = s["name"].get<std::string>();
+    if (s.contains("scanners_written") && s["scanners_written"].is_array()) {
+      for (const Json& m : s["scanners_written"]) {
+        Pose T;
+        if (!PoseFromJson(m, &T)) return fail("a written scanner pose is not a 4x4 matrix");
+        t.sensor.T_world_scanners_written.push_back(T);
+      }
+    }
+    if (s.contains("jackets") && s["jackets"].is_array()) {
+      for (const Json& name : s["jackets"]) {
+        if (name.is_string()) t.sensor.jackets.push_back(name.get<std::string>());
+      }
+    }
   }
   if (j.contains("counts") && j["counts"].is_object()) {
     const Json& c = j["counts"];

@@ -38,6 +38,8 @@ void Add(const std::string& kind, TriangleMesh mesh, double radius, std::vector<
   scene_mesh.mesh_world = std::move(mesh);
   scene_mesh.label = kLabelAccessory;
   scene_mesh.kind = kind;
+  // Black cable and hose jackets return little light.
+  if (kind == "harness" || kind == "hose") scene_mesh.reflectance = 0.08;
   scene->meshes.push_back(std::move(scene_mesh));
   report->area += record.area;
   if (kind == "harness") ++report->harnesses;

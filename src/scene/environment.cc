@@ -178,6 +178,7 @@ void AddEnvironment(const Eigen::AlignedBox3d& asset_box_world, const Environmen
     }
     floor.label = kLabelBackground;
     floor.kind = "floor";
+    floor.reflectance = 0.3;  // concrete
     scene->meshes.push_back(std::move(floor));
   }
   for (SceneMesh& mesh : clutter) scene->meshes.push_back(std::move(mesh));

@@ -8,12 +8,16 @@
 #define EDGEFIT_SCANNER_ASSET_SCAN_H_
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/scanner/station_residuals.h"
 #include "edgefit/scanner/virtual_scanner.h"
+#include "edgefit/scene/as_built.h"
+#include "edgefit/scene/jackets.h"
 
 namespace edgefit {
 
@@ -24,23 +28,45 @@ struct AssetScanOptions {
   // high) unless explicit poses are given.
   int scanners = 3;
   std::vector<Pose> T_world_scanners;
-  // Spacing, noise, range, window; its seed is replaced by a stream of `seed`.
+  // Spacing, noise, beam, range, window; its seed is replaced by a stream of `seed`.
   VirtualScanOptions scan;
+  // Robots as built: link surfaces off their CAD (as_built.h), protective
+  // jackets (jackets.h); stations registered with residuals
+  // (station_residuals.h). Their seeds are replaced by streams of `seed`.
+  AsBuiltOptions as_built;
+  JacketOptions jackets;
+  StationResidualOptions station_residuals;
   uint64_t seed = 1;
 };
 
+// The sensors of `edgefit scan --sensor`, items joined by '+' and applied in
+// order: "ideal" (one exact ray per cell, Gaussian range noise, exact
+// station poses, surfaces exactly the CAD: every effect off), "realistic"
+// (all four effects below), or one effect: "mixed_pixels" (the beam
+// footprint, a FARO Focus class beam unless options->scan.beam already has
+// one), "incidence" (noise and dropouts by incidence and reflectance),
+// "stations" (registration residuals of 1-3 mm and 0.005-0.02 deg),
+// "as_built" (surfaces 0.5-2 mm off the CAD), "jackets" (protective jackets:
+// a property of the robot, so not part of "realistic").
+Status ApplySensorPreset(const std::string& name, AssetScanOptions* options);
+
 // The sub-seeds of `seed` for each random part (also the `edgefit scan`
-// streams): 1 accessories, 2 clutter, 3 scanner placement, 4 range noise.
+// streams): 1 accessories, 2 clutter, 3 scanner placement, 4 range noise,
+// 5 as-built surfaces, 6 jackets, 7 station residuals.
 enum class AssetScanStream : uint64_t {
   kAccessories = 1,
   kClutter = 2,
   kPlacement = 3,
-  kNoise = 4
+  kNoise = 4,
+  kAsBuilt = 5,
+  kJackets = 6,
+  kStations = 7
 };
 uint64_t AssetScanSeed(uint64_t seed, AssetScanStream stream);
 
-// Builds the scene and scans it. T_world_scanners receives the scanner poses
-// used (may be null). Fails on a model without geometry or bad options.
+// Builds the scene and scans it. T_world_scanners receives the scanners'
+// true poses (may be null); the scans carry the written ones, which differ
+// when station_residuals is on. Fails on a model without geometry or bad options.
 Status ScanAsset(const KinematicModel& model, const std::vector<double>& q,
                  const Pose& T_world_base, const AssetScanOptions& options, VirtualScan* result,
                  std::vector<Pose>* T_world_scanners);

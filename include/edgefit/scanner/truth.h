@@ -15,7 +15,17 @@
 //     "counts": {"cells": N, "valid": N, "missing": N, "background": N,
 //                "accessory": N, "link": N, "true_edge": N,
 //                "per_link": {"link_1": N, ...}},
-//     "labels_format": "<one line describing the --labels sidecar>"
+//     "labels_format": "<one line describing the --labels sidecar>",
+//     // Only when a realistic effect is on (absent for the ideal sensor):
+//     "sensor": {"name": "realistic",
+//                "beam": {"sub_rays": 16, "exit_diameter": 0.0025, "divergence": 0.00019,
+//                         "mixed_return": "mean", "mixed_depth": 0.003},
+//                "range_noise": {"signal_model": true, ...RangeNoiseOptions},
+//                "as_built": {"enabled": true, "amplitude_min": ..., "amplitude_max": ...},
+//                "jackets": ["link_2", ...],          // links wearing one
+//                "station_residuals": {"enabled": true, ...},
+//                "scanners_written": [[[4x4]], ...],  // the poses in the scan file
+//                "counts": {"mixed_pixel": N, "jacket": N}}
 //   }
 #ifndef EDGEFIT_SCANNER_TRUTH_H_
 #define EDGEFIT_SCANNER_TRUTH_H_
@@ -28,7 +38,9 @@
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/scanner/station_residuals.h"
 #include "edgefit/scanner/virtual_scanner.h"
+#include "edgefit/scene/as_built.h"
 
 namespace edgefit {
 
@@ -43,9 +55,22 @@ struct TruthSettings {
   double true_edge_distance = 0.0;  // [m]
 };
 
+// The realistic effects of a scan (asset_scan.h); all off for the ideal sensor.
+struct TruthSensor {
+  std::string name = "ideal";
+  BeamOptions beam;
+  RangeNoiseOptions range_noise;
+  AsBuiltOptions as_built;
+  std::vector<std::string> jackets;  // links wearing a jacket
+  StationResidualOptions station_residuals;
+  std::vector<Pose> T_world_scanners_written;  // as in the scan file
+  bool realistic() const;
+};
+
 struct LabelCounts {
   uint64_t cells = 0, valid = 0, missing = 0, background = 0, accessory = 0, link = 0;
   uint64_t true_edge = 0;  // cells with kTrueEdgeFlag
+  uint64_t mixed_pixel = 0, jacket = 0;  // cells with kMixedPixelFlag, kJacketFlag
   std::vector<std::pair<std::string, uint64_t>> per_link;  // link name -> cells, links() order
 };
 
@@ -58,6 +83,7 @@ struct Truth {
   std::vector<Pose> T_world_scanners;
   uint64_t seed = 0;
   TruthSettings settings;
+  TruthSensor sensor;
   LabelCounts counts;
 };
 

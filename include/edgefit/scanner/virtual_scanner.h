@@ -5,7 +5,10 @@
 // Per cell (row, col) with unit direction d_scanner from the scan's exact
 // AngularLattice (scanner frame, level: lattice frame = scanner frame):
 //   first hit at distance t (t <= max_range, else the cell is missing);
-//   range  = t + n,  n ~ N(0, noise_sigma^2), "along the laser direction";
+//   range  = t + n,  n ~ N(0, noise_sigma^2), "along the laser direction"
+//            (a realistic sensor: t is the footprint's mixed range and the
+//            noise grows with incidence and darkness, beam_footprint.h and
+//            range_noise.h; weak returns drop out);
 //   point  = d_scanner * range (scanner frame, float);
 //   intensity = |cos(incidence)| = |d . n_face| in [0, 1] (a Lambertian
 //               return with no range fall-off);
@@ -35,6 +38,8 @@
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
 #include "edgefit/scan/organized_scan.h"
+#include "edgefit/scanner/beam_footprint.h"
+#include "edgefit/scanner/range_noise.h"
 #include "edgefit/scene/scene.h"
 
 namespace edgefit {
@@ -63,6 +68,12 @@ struct VirtualScanOptions {
   double sharp_edge_min_dihedral_deg = 30.0;
   // A grid larger than this fails (a mistyped spacing would exhaust memory).
   int64_t max_cells_per_scan = 200'000'000;
+  // The beam's footprint and mixed pixels (beam_footprint.h); default: an
+  // ideal ray per cell.
+  BeamOptions beam;
+  // Range noise and dropouts by incidence and reflectance (range_noise.h);
+  // default: noise_sigma everywhere, no dropouts.
+  RangeNoiseOptions range_noise;
   // Embree RTC_SCENE_FLAG_ROBUST (slower; avoids rare misses on shared edges).
   bool robust = false;
   uint64_t seed = 1;

@@ -16,13 +16,18 @@ namespace edgefit {
 //   0 missing (no return), 1 background (floor, clutter), 2 accessory,
 //   3 + k link k of the KinematicModel (links() order);
 // kTrueEdgeFlag is or-ed in when the hit lies within the true-edge distance
-// (1.5 mm) of a sharp mesh edge (dihedral >= 30 degrees) of the link it hit.
+// (1.5 mm) of a sharp mesh edge (dihedral >= 30 degrees) of the link it hit;
+// kMixedPixelFlag when the beam's footprint fell on surfaces at different
+// depths and the range is a mix of them (beam_footprint.h); kJacketFlag on
+// accessory cells of a protective jacket (jackets.h).
 constexpr uint16_t kLabelMissing = 0;
 constexpr uint16_t kLabelBackground = 1;
 constexpr uint16_t kLabelAccessory = 2;
 constexpr uint16_t kLabelFirstLink = 3;
 constexpr uint16_t kTrueEdgeFlag = 0x8000;
-constexpr uint16_t kLabelMask = 0x7fff;
+constexpr uint16_t kMixedPixelFlag = 0x4000;
+constexpr uint16_t kJacketFlag = 0x2000;
+constexpr uint16_t kLabelMask = 0x1fff;
 
 inline uint16_t LinkLabel(int link) { return static_cast<uint16_t>(kLabelFirstLink + link); }
 inline bool IsLinkLabel(uint16_t label) { return (label & kLabelMask) >= kLabelFirstLink; }
@@ -33,6 +38,9 @@ struct SceneMesh {
   uint16_t label = kLabelBackground;
   int link = -1;            // link index for link meshes, else -1
   std::string kind;         // "link", "floor", "pillar", "box", "fence", "harness", "cover", ...
+  // Diffuse reflectance in (0, 1]: scales the return's energy in a realistic
+  // scan (range noise, dropouts, the mix of a mixed pixel); ideal scans ignore it.
+  double reflectance = 0.5;
 };
 
 struct Scene {
