@@ -14,3 +14,8 @@ edgefit_add_test(conveyance_fit_test SINGLE_PROCESS
 edgefit_add_test(linear_track_fit_test SINGLE_PROCESS
   SOURCES pipeline/linear_track_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model)
+# The robot pipeline on a small realistic scan: jackets, station residuals,
+# mixed pixels, incidence noise, as-built surfaces.
+edgefit_add_test(realistic_fit_test SINGLE_PROCESS
+  SOURCES pipeline/realistic_fit_test.cc
+  LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)

@@ -15,3 +15,8 @@ edgefit_add_test(scanner_model_test
 edgefit_add_test(scanner_scene_test
   SOURCES scanner/scene_scan_test.cc
   LIBS edgefit::scanner edgefit::scene)
+# The realistic sensor's effects (mixed pixels, incidence noise, stations,
+# as-built surfaces, jackets).
+edgefit_add_test(realistic_sensor_test
+  SOURCES scanner/realistic_sensor_test.cc
+  LIBS edgefit::scanner edgefit::scene)

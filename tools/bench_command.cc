@@ -340,6 +340,7 @@ Command BenchCommand() {
        "noise_mm",       "scanners",      "seed",
        "w_high",         "lambda",        "loss",
        "refine_chain",   "threads",       "sensors",
+       "align_stations", "covering_rounds",
        "beam",           "jackets"},
       RunBench};
 }

@@ -243,7 +243,7 @@ Command FitCommand() {
        "loss_scale_mm",
        "lambda",
        "parameterization",
-       "refine_chain",
+       "refine_chain", "align_stations", "covering_rounds",
        "init",
        "truth",
        "out_joint_states",

@@ -19,6 +19,12 @@ DEFINE_string(parameterization, "joint_space",
 DEFINE_bool(refine_chain, true,
             "After the sequential fit, refine the base pose and every joint together in one "
             "Ceres problem (solvers/refinement/); --norefine_chain: the sequential fit alone.");
+DEFINE_bool(align_stations, true,
+            "Align the scan's stations to each other before the fit (their registration "
+            "residuals); --noalign_stations: use the written station poses.");
+DEFINE_int32(covering_rounds, 2,
+             "Rounds of the whole-chain refinement without the coverings found at the last "
+             "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
 DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
@@ -39,6 +45,8 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   EDGEFIT_RETURN_IF_ERROR(
       ParseJointParameterization(FLAGS_parameterization, &options->residuals.parameterization));
   options->refinement.chain.refine = FLAGS_refine_chain;
+  options->stations.align = FLAGS_align_stations;
+  options->refinement.coverings.rounds = FLAGS_covering_rounds;
   if (!FLAGS_init.empty()) {
     double x = 0.0, y = 0.0, yaw = 0.0;
     EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));

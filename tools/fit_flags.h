@@ -17,6 +17,8 @@ DECLARE_double(loss_scale_mm);
 DECLARE_double(lambda);
 DECLARE_string(parameterization);
 DECLARE_bool(refine_chain);
+DECLARE_bool(align_stations);
+DECLARE_int32(covering_rounds);
 DECLARE_string(init);
 
 namespace edgefit::tools {

@@ -24,7 +24,7 @@ struct Attempt {
 
 }  // namespace
 
-Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& options,
+Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitOptions& options,
            const ProgressFn& progress, FitResult* result) {
   CHECK(result != nullptr);
   const auto start = std::chrono::steady_clock::now();
@@ -54,11 +54,14 @@ Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& 
 
   // Sec. 4: edge weights and normals.
   auto stage = std::chrono::steady_clock::now();
-  say("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
+  say("edges: detecting on " + std::to_string(written_scans.TotalValid()) + " points");
   EdgeDetectionResult edges;
-  EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
+  EDGEFIT_RETURN_IF_ERROR(DetectEdges(written_scans, options.edges, &edges));
   result->timings.edges = Since(stage);
-  CorrespondenceSearch search(&scans, options.uniform_weights ? nullptr : &edges.w_edge);
+
+  const ScanSet& scans = written_scans;
+  const CellWeights* weights = options.uniform_weights ? nullptr : &edges.w_edge;
+  CorrespondenceSearch search(&scans, weights);
   const ScanVisibility visibility(&scans);
   WeightedIcp icp(&scans, &search, &edges.normals, options.residuals);
   const JointSweep sweep(&search.lattice(), &visibility);
@@ -116,11 +119,29 @@ Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& 
   const Status resolved = model.ResolveDependentJoints(&best.q);
   result->q = best.q;
 
-  // Extension: the whole chain at once, and its covariance.
-  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, scans, &search, cad, options, say, result));
+  // Extensions: the stations registered to the fitted model, then the whole
+  // chain at once on them, and its covariance.
+  ScanSet aligned_scans;
+  const bool align = options.stations.align && scans.scans.size() > 1;
+  if (align) {
+    stage = std::chrono::steady_clock::now();
+    aligned_scans = scans;
+    EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(model, ChainSamples(model, cad, options, nullptr),
+                                                 result->T_world_base, result->q, nullptr,
+                                                 options.stations, &aligned_scans,
+                                                 &result->stations));
+    result->timings.stations = Since(stage);
+    say(StationAlignmentLine(result->stations));
+  }
+  const ScanSet& final_scans = align ? aligned_scans : scans;
+  CorrespondenceSearch final_search(&final_scans, weights);
+  WeightedIcp final_icp(&final_scans, &final_search, &edges.normals, options.residuals);
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad,
+                                           options, say, result));
 
   // The verdict of every body alone at the final values.
-  EDGEFIT_RETURN_IF_ERROR(JudgeQuality(model, &icp, cad, best.records, resolved, options, result));
+  EDGEFIT_RETURN_IF_ERROR(
+      JudgeQuality(model, &final_icp, cad, best.records, resolved, options, result));
   result->timings.total = Since(start);
   return Status::Ok();
 }

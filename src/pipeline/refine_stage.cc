@@ -3,20 +3,16 @@
 #include <cstdio>
 
 #include "solvers/refinement/chain_refinement.h"
+#include "solvers/refinement/coverings.h"
 #include "stages.h"
 
 namespace edgefit {
 
-Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
-                        CorrespondenceSearch* search, const CadSamples& cad,
-                        const FitOptions& options, const ProgressFn& say, FitResult* result) {
-  const auto start = std::chrono::steady_clock::now();
-  const ChainRefinementOptions& refinement = options.refinement.chain;
-  if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
-  // The samples of every moving body (and the base) in its link's frame;
-  // prismatic bodies keep point-to-point residuals, as in their joint ICP.
+std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadSamples& cad,
+                                         const FitOptions& options,
+                                         std::vector<bool>* point_to_point) {
   std::vector<SurfaceSamples> chain_samples(model.links().size());
-  std::vector<bool> point_to_point(model.links().size(), false);
+  if (point_to_point != nullptr) point_to_point->assign(model.links().size(), false);
   for (size_t j = 0; j <= model.joints().size(); ++j) {
     const bool root = j == model.joints().size();
     if (!root && !model.joints()[j].IsMoving()) continue;
@@ -24,12 +20,56 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                            : MakeBody(model, model.joints()[j].child_link, static_cast<int>(j));
     chain_samples[static_cast<size_t>(body.link)] =
         BodySamples(body, cad.icp, options.samples.max_chain_samples);
-    point_to_point[static_cast<size_t>(body.link)] =
-        !root && model.joints()[j].type == JointType::kPrismatic;
+    if (point_to_point != nullptr) {
+      (*point_to_point)[static_cast<size_t>(body.link)] =
+          !root && model.joints()[j].type == JointType::kPrismatic;
+    }
   }
+  return chain_samples;
+}
+
+Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
+                        CorrespondenceSearch* search, const CellWeights* weights,
+                        const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
+                        FitResult* result) {
+  const auto start = std::chrono::steady_clock::now();
+  const ChainRefinementOptions& refinement = options.refinement.chain;
+  if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
+  std::vector<bool> point_to_point;
+  const std::vector<SurfaceSamples> chain_samples =
+      ChainSamples(model, cad, options, &point_to_point);
   EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples, point_to_point,
                                       refinement, options.residuals, &result->T_world_base,
                                       &result->q, &result->chain_refinement));
+
+  // Coverings (jackets, covers) found at the estimate and left out, then
+  // the chain refined again without them.
+  const CoveringOptions& coverings = options.refinement.coverings;
+  for (int round = 0; refinement.refine && round < coverings.rounds; ++round) {
+    CellMask covered;
+    EDGEFIT_RETURN_IF_ERROR(FindCoverings(model, scans, search, chain_samples,
+                                          result->T_world_base, result->q, coverings,
+                                          refinement.icp.correspondence.use_lattice, &covered,
+                                          &result->coverings));
+    CellWeights masked(scans.scans.size());
+    for (size_t s = 0; s < scans.scans.size(); ++s) {
+      masked[s] = weights != nullptr ? (*weights)[s] : std::vector<float>(scans.scans[s].size(), 1.f);
+      for (size_t i = 0; i < masked[s].size(); ++i) {
+        if (covered[s][i]) masked[s][i] = 0.f;
+      }
+    }
+    char line[200];
+    std::snprintf(line, sizeof(line),
+                  "chain: %zu of %zu matched points lie off the CAD surface over an area "
+                  "(jackets, covers): refining without them",
+                  result->coverings.covered, result->coverings.matched);
+    say(line);
+    CorrespondenceSearch masked_search(&scans, &masked);
+    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples,
+                                        point_to_point, refinement, options.residuals,
+                                        &result->T_world_base, &result->q,
+                                        &result->chain_refinement));
+  }
   result->timings.refine = Since(start);
   if (refinement.refine) {
     char line[200];

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace edgefit {
@@ -72,6 +73,25 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
     base_std["xyz_m"].push_back(NumberOrNull(chain.base_translation_std[i]));
   }
   const bool refined = options.refinement.chain.refine;
+  json covered_links = json::object();
+  const CoveringSummary& coverings = fit.coverings;
+  for (size_t l = 0; l < coverings.link_covered.size(); ++l) {
+    if (coverings.link_covered[l] == 0) continue;
+    covered_links[model.links()[l].name] = {
+        {"matched", coverings.link_matched[l]},
+        {"covered", coverings.link_covered[l]},
+        {"share", static_cast<double>(coverings.link_covered[l]) /
+                      static_cast<double>(std::max<size_t>(1, coverings.link_matched[l]))}};
+  }
+  json stations = json::array();
+  for (const StationCorrection& c : fit.stations.stations) {
+    stations.push_back({{"correction_m", c.translation},
+                        {"correction_rad", c.rotation},
+                        {"matches", c.matches},
+                        {"rms_before_m", c.rms_before},
+                        {"rms_after_m", c.rms_after},
+                        {"T_correction", PoseRows(c.correction)}});
+  }
   return {{"kind", AssetKindName(kind)},
           {"base",
            {{"xyz", {xyz.x(), xyz.y(), xyz.z()}},
@@ -80,12 +100,19 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
           {"joints", joints},
           {"joint_std", joint_std},
           {"base_std", base_std},
+          {"stations",
+           {{"aligned", !fit.stations.stations.empty()}, {"corrections", stations}}},
           {"timing_s",
            {{"edges", fit.timings.edges},
+            {"stations", fit.timings.stations},
             {"base_rough", fit.timings.base_rough},
             {"base_precise", fit.timings.base_precise},
             {"chain", fit.timings.chain},
             {"refine", fit.timings.refine}}},
+          {"coverings",
+           {{"matched", coverings.matched},
+            {"covered", coverings.covered},
+            {"per_link", covered_links}}},
           {"quality",
            {{"per_link", PerLinkJson(fit)},
             {"ok", fit.ok},

@@ -41,11 +41,22 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
                       const CadSamples& cad, const JointSweep& sweep, const FitOptions& options,
                       const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs);
 
+// The samples of every moving body (and the base) in its link's frame,
+// model.links() order (empty for links without a body of their own);
+// *point_to_point (may be null): per link, prismatic bodies, which keep
+// point-to-point residuals as in their joint ICP.
+std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadSamples& cad,
+                                         const FitOptions& options,
+                                         std::vector<bool>* point_to_point);
+
 // The whole chain refined at once (options.refinement), or its covariance
-// alone, from result->T_world_base and result->q, in place.
+// alone, from result->T_world_base and result->q, in place; then, for
+// options.refinement.coverings.rounds, refined again without the coverings
+// found at the estimate. weights: the search's (nullptr: uniform).
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
-                        CorrespondenceSearch* search, const CadSamples& cad,
-                        const FitOptions& options, const ProgressFn& say, FitResult* result);
+                        CorrespondenceSearch* search, const CellWeights* weights,
+                        const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
+                        FitResult* result);
 
 // The verdict of every jointed body alone at the final values (the base's
 // is in result->bodies already), appended to result->bodies; result->ok

@@ -17,7 +17,9 @@
 #include "solvers/joints/body.h"
 #include "solvers/joints/chain_fitter.h"
 #include "solvers/refinement/chain_refinement.h"
+#include "solvers/refinement/coverings.h"
 #include "solvers/registration/residual_options.h"
+#include "solvers/registration/station_alignment.h"
 #include "solvers/registration/weighted_icp.h"
 
 namespace edgefit {
@@ -53,6 +55,9 @@ struct RefinementOptions {
   // 1 s on 6 M points (BENCHMARK.md, "Whole-chain refinement"). The
   // covariance of the joints is computed either way (chain.covariance).
   ChainRefinementOptions chain;
+  // Jackets and covers found after the sequential fit and left out of the
+  // refinement (solvers/refinement/coverings.h); rounds = 0 turns it off.
+  CoveringOptions coverings;
 };
 
 // The verdict of each body alone at the final values (src/pipeline/quality).
@@ -73,6 +78,9 @@ struct FitOptions {
   bool uniform_weights = false;
   // Sec. 4: edges and their weights (w_high lives here).
   EdgeDetectionOptions edges;
+  // Extension: the stations aligned to each other before the fit, against
+  // their registration residuals (solvers/registration/station_alignment.h).
+  StationAlignmentOptions stations;
   // The loss and joint constraint of every precise stage.
   ResidualOptions residuals;
   // The CAD samples of every stage.

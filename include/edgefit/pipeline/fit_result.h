@@ -36,7 +36,7 @@ struct BodyQuality {
 
 struct FitTimings {
   // refine: the whole-chain refinement (or the covariance alone) [s]
-  double edges = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0, refine = 0.0,
+  double edges = 0.0, stations = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0, refine = 0.0,
          total = 0.0;  // [s]
 };
 
@@ -49,9 +49,13 @@ struct FitResult {
   BaseRoughResult base_rough;
   ConveyanceBaseRoughResult arm_tips;  // kArmTips
   std::vector<BodyQuality> bodies;     // base first, then joints in fit order
+  // The stations' alignment: each station's correction of its written pose.
+  StationAlignmentSummary stations;
   // The whole-chain refinement and the covariance: joint_std per joint
   // [rad] or [m], NaN for dependent joints or when not computed.
   ChainRefinementSummary chain_refinement;
+  // The coverings left out of the refinement's last round.
+  CoveringSummary coverings;
   FitTimings timings;
   bool ok = false;
   std::string message;  // why not ok

@@ -1,0 +1,109 @@
+#include "solvers/refinement/coverings.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace edgefit {
+
+bool CoveringOptions::IsValid(std::string* error) const {
+  if (rounds < 0 || window < 0 || window > 20) {
+    *error = "coverings: rounds must be >= 0 and window 0..20";
+  } else if (!(gate > 0.0 && area_offset > 0.0 && point_offset >= area_offset)) {
+    *error = "coverings: need gate > 0 and 0 < area_offset <= point_offset";
+  } else {
+    return true;
+  }
+  return false;
+}
+
+Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
+                     CorrespondenceSearch* search, const std::vector<SurfaceSamples>& link_samples,
+                     const Pose& T_world_base, const std::vector<double>& q,
+                     const CoveringOptions& options, bool use_lattice, CellMask* covered,
+                     CoveringSummary* summary) {
+  std::string error;
+  if (!options.IsValid(&error)) return Status::Error(error);
+  if (link_samples.size() != model.links().size() || q.size() != model.joints().size()) {
+    return Status::Error("coverings: samples or joint values do not match the model");
+  }
+  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
+  const size_t n_scans = scans.scans.size();
+  // Per cell: signed distance of its closest sample, that distance, its link.
+  constexpr float kNone = std::numeric_limits<float>::infinity();
+  std::vector<std::vector<float>> offset(n_scans), closest(n_scans);
+  std::vector<std::vector<int>> owner(n_scans);
+  for (size_t s = 0; s < n_scans; ++s) {
+    offset[s].assign(scans.scans[s].size(), 0.0f);
+    closest[s].assign(scans.scans[s].size(), kNone);
+    owner[s].assign(scans.scans[s].size(), -1);
+  }
+  CorrespondenceOptions correspondence;
+  correspondence.max_distance = options.gate;
+  correspondence.use_lattice = use_lattice;
+  std::vector<Correspondence> matches;
+  for (size_t l = 0; l < link_samples.size(); ++l) {
+    const SurfaceSamples& samples = link_samples[l];
+    if (samples.points.empty()) continue;
+    const Pose& T = T_world_link[l];
+    std::vector<Eigen::Vector3f> q_world(samples.size());
+    Eigen::AlignedBox3d crop;
+    for (size_t i = 0; i < samples.size(); ++i) {
+      q_world[i] = (T * samples.points[i].cast<double>()).cast<float>();
+      crop.extend(q_world[i].cast<double>());
+    }
+    crop.min().array() -= options.gate;
+    crop.max().array() += options.gate;
+    search->Find(q_world, crop, correspondence, &matches);
+    for (const Correspondence& c : matches) {
+      const OrganizedScan& scan = scans.scans[static_cast<size_t>(c.scan)];
+      const Eigen::Vector3d q_i = q_world[static_cast<size_t>(c.source)].cast<double>();
+      const Eigen::Vector3d n_i =
+          T.linear() * samples.normals[static_cast<size_t>(c.source)].cast<double>();
+      if (n_i.dot(scan.T_world_scanner().translation() - q_i) <= 0.0) continue;  // back face
+      float& best = closest[static_cast<size_t>(c.scan)][static_cast<size_t>(c.cell)];
+      if (!(c.distance < best)) continue;
+      best = c.distance;
+      offset[static_cast<size_t>(c.scan)][static_cast<size_t>(c.cell)] =
+          static_cast<float>(n_i.dot(scan.PointWorld(static_cast<size_t>(c.cell)) - q_i));
+      owner[static_cast<size_t>(c.scan)][static_cast<size_t>(c.cell)] = static_cast<int>(l);
+    }
+  }
+
+  *summary = CoveringSummary();
+  summary->link_matched.assign(model.links().size(), 0);
+  summary->link_covered.assign(model.links().size(), 0);
+  covered->assign(n_scans, {});
+  std::vector<float> block;
+  for (size_t s = 0; s < n_scans; ++s) {
+    const OrganizedScan& scan = scans.scans[s];
+    (*covered)[s].assign(scan.size(), 0);
+    const int rows = scan.rows(), cols = scan.cols();
+    const int w = scan.organized() ? options.window : 0;
+    for (int c = 0; c < cols; ++c) {
+      for (int r = 0; r < rows; ++r) {
+        const size_t cell = scan.Index(r, c);
+        if (owner[s][cell] < 0) continue;
+        block.clear();
+        for (int cc = std::max(0, c - w); cc <= std::min(cols - 1, c + w); ++cc) {
+          for (int rr = std::max(0, r - w); rr <= std::min(rows - 1, r + w); ++rr) {
+            const size_t other = scan.Index(rr, cc);
+            if (owner[s][other] >= 0) block.push_back(offset[s][other]);
+          }
+        }
+        std::nth_element(block.begin(), block.begin() + block.size() / 2, block.end());
+        const bool is_covering = block[block.size() / 2] > options.area_offset ||
+                                 offset[s][cell] > options.point_offset;
+        const size_t link = static_cast<size_t>(owner[s][cell]);
+        ++summary->matched;
+        ++summary->link_matched[link];
+        if (!is_covering) continue;
+        (*covered)[s][cell] = 1;
+        ++summary->covered;
+        ++summary->link_covered[link];
+      }
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace edgefit

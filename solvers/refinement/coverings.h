@@ -1,0 +1,72 @@
+// Coverings (an extension of the paper): protective jackets, covers and
+// dress packs that follow a link's surface a few millimetres off it. The
+// scanner sees them instead of the link, and a fit that takes their points
+// for the link's leans outwards (0.2-0.4 deg on a jacketed upper arm).
+// They are found where the points lie outside the fitted CAD surface,
+// consistently over an area:
+//
+//   - every visible CAD sample of every link (front-facing to the scanner of
+//     its match) is matched to its nearest scan cell within `gate`; each
+//     cell keeps the signed distance s = n . (p - q) along the CAD normal
+//     of its closest sample (positive: outside the surface);
+//   - a cell is a covering when the median of s over the matched cells of
+//     its (2 window + 1)^2 lattice block exceeds area_offset, or its own s
+//     exceeds point_offset.
+//
+// The whole-chain refinement then gives those cells weight 0 and runs
+// again; `rounds` times, each from the last estimate, so a covering the
+// first estimate leaned into shows fully once the link is back on its
+// uncovered surface. A bulge of the as-built surface beyond area_offset
+// counts too: fewer points, no bias.
+#ifndef EDGEFIT_SOLVERS_REFINEMENT_COVERINGS_H_
+#define EDGEFIT_SOLVERS_REFINEMENT_COVERINGS_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/correspondence/correspondence_search.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/model/surface_sampler.h"
+#include "edgefit/scan/organized_scan.h"
+
+namespace edgefit {
+
+struct CoveringOptions {
+  // Find coverings and refine without them, `rounds` times (0: never).
+  int rounds = 2;
+  double gate = 0.012;          // [m] CAD sample to scan point
+  int window = 3;               // [cells] half-size of the lattice block
+  double area_offset = 0.002;   // [m] median outside distance of a covering's block
+  double point_offset = 0.004;  // [m] outside distance of a lone point
+
+  bool IsValid(std::string* error) const;
+};
+
+// Per scan, per cell: 1 where a covering was found.
+using CellMask = std::vector<std::vector<uint8_t>>;
+
+struct CoveringSummary {
+  size_t matched = 0;  // cells matched to a CAD sample
+  size_t covered = 0;  // of those, coverings
+  // Per link (model.links() order): cells whose closest sample is on it,
+  // and how many of those are coverings.
+  std::vector<size_t> link_matched, link_covered;
+};
+
+// Finds the coverings of the model at (T_world_base, q). link_samples: per
+// link (model.links() order, link frame, with normals; empty links are
+// skipped). search: over `scans`, without a mask; use_lattice as the
+// refinement's correspondences. An unorganized scan has no lattice block:
+// its cells are judged by their own distance.
+Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
+                     CorrespondenceSearch* search, const std::vector<SurfaceSamples>& link_samples,
+                     const Pose& T_world_base, const std::vector<double>& q,
+                     const CoveringOptions& options, bool use_lattice, CellMask* covered,
+                     CoveringSummary* summary);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_SOLVERS_REFINEMENT_COVERINGS_H_

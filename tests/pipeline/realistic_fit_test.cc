@@ -1,0 +1,133 @@
+// The robot pipeline on a small realistic scan (`edgefit scan
+// --sensor=realistic --jackets`): the bundled robot with its weld gun,
+// accessories and protective jackets over the upper arm and forearm, a
+// FARO Focus class beam with mixed pixels, noise and dropouts by incidence
+// and reflectance, station residuals and as-built surfaces, 4 mm spacing.
+// Fails if accuracy regresses, if the stations are not brought together or
+// if the jackets are not found.
+#include <glog/logging.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "edgefit/bench/fit_errors.h"
+#include "edgefit/model/composition.h"
+#include "edgefit/model/joint_values.h"
+#include "edgefit/pipeline/fit.h"
+#include "edgefit/scanner/asset_scan.h"
+#include "edgefit/scanner/truth.h"
+
+namespace edgefit {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct RealisticScene {
+  KinematicModel model;
+  std::vector<double> q;
+  Pose T_world_base = Pose::Identity();
+  VirtualScan scan;
+  std::vector<Pose> T_world_scanners;  // true poses
+  FitResult fit;
+  FitErrors errors;
+};
+
+const RealisticScene& GetScene() {
+  static RealisticScene* scene = [] {
+    auto* out = new RealisticScene;
+    const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
+    AttachSpec gun;
+    CHECK(ParseAttachSpec(dir + "weld_gun.urdf@tool0", &gun).ok());
+    CHECK(
+        LoadModelWithAttachments(dir + "robot.urdf", {gun}, ModelLoadOptions(), &out->model).ok());
+    out->q = out->model.ZeroJoints();
+    CHECK(ParseJointAssignments("joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,"
+                                "joint_6=0.6,gun_joint=0.09",
+                                out->model, &out->q)
+              .ok());
+    CHECK(out->model.ResolveDependentJoints(&out->q).ok());
+    out->T_world_base = PoseFromXyzRpy({0.5, -0.2, 0.0}, {0.0, 0.0, 15.0 * kDeg});
+    AssetScanOptions options;
+    CHECK(ApplySensorPreset("realistic+jackets", &options).ok());
+    options.accessories = true;
+    options.scan.spacing = 0.004;
+    options.seed = 7;
+    CHECK(ScanAsset(out->model, out->q, out->T_world_base, options, &out->scan,
+                    &out->T_world_scanners)
+              .ok());
+    CHECK(Fit(out->model, out->scan.scans, FitOptions(), nullptr, &out->fit).ok());
+    CHECK(CompareWithTruth(out->model, out->fit.q, out->fit.T_world_base,
+                           NamedJointValues(out->model, out->q), out->T_world_base, &out->errors)
+              .ok());
+    return out;
+  }();
+  return *scene;
+}
+
+// The pose of station j seen from station i, off from the truth [m, rad].
+void RelativeError(const std::vector<Pose>& T, const std::vector<Pose>& truth, size_t i, size_t j,
+                   double* translation, double* rotation) {
+  const Pose D = (T[i].inverse() * T[j]) * (truth[i].inverse() * truth[j]).inverse();
+  *translation = D.translation().norm();
+  *rotation = Eigen::AngleAxisd(D.linear()).angle();
+}
+
+TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
+  const RealisticScene& s = GetScene();
+  std::printf("  %zu points; base %.3f mm %.4f deg; %.2f s; %s\n", s.scan.scans.TotalValid(),
+              s.errors.base_translation * 1e3, s.errors.base_rotation / kDeg,
+              s.fit.timings.total, s.fit.ok ? "ok" : s.fit.message.c_str());
+  double sum = 0.0, max = 0.0;
+  int revolute = 0;
+  for (const JointError& e : s.errors.joints) {
+    std::printf("  %-24s error %.4f %s\n", e.name.c_str(),
+                e.prismatic ? e.error * 1e3 : e.error / kDeg, e.prismatic ? "mm" : "deg");
+    if (e.prismatic) continue;
+    sum += e.error;
+    max = std::max(max, e.error);
+    ++revolute;
+  }
+  EXPECT_LT(sum / revolute, REVOLUTE_MEAN_BOUND * kDeg);
+  EXPECT_LT(max, REVOLUTE_MAX_BOUND * kDeg);
+  EXPECT_LT(s.errors.base_translation, BASE_BOUND);
+}
+
+TEST(RealisticFitTest, StationsAgreeAfterAlignment) {
+  const RealisticScene& s = GetScene();
+  std::vector<Pose> written, aligned;
+  for (size_t k = 0; k < s.scan.scans.scans.size(); ++k) {
+    written.push_back(s.scan.scans.scans[k].T_world_scanner());
+    aligned.push_back(s.fit.stations.stations[k].correction * written[k]);
+  }
+  ASSERT_EQ(written.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    for (size_t j = i + 1; j < 3; ++j) {
+      double t_written = 0, r_written = 0, t_aligned = 0, r_aligned = 0;
+      RelativeError(written, s.T_world_scanners, i, j, &t_written, &r_written);
+      RelativeError(aligned, s.T_world_scanners, i, j, &t_aligned, &r_aligned);
+      std::printf("  stations %zu-%zu: %.3f mm %.4f deg written, %.3f mm %.4f deg aligned\n", i, j,
+                  1e3 * t_written, r_written / kDeg, 1e3 * t_aligned, r_aligned / kDeg);
+      EXPECT_LT(t_aligned, 0.5 * t_written);
+    }
+  }
+}
+
+TEST(RealisticFitTest, JacketsAreFoundOnTheUpperArmAndForearm) {
+  const RealisticScene& s = GetScene();
+  const CoveringSummary& c = s.fit.coverings;
+  ASSERT_EQ(c.link_matched.size(), s.model.links().size());
+  for (size_t l = 0; l < c.link_matched.size(); ++l) {
+    if (c.link_matched[l] == 0) continue;
+    const double share = static_cast<double>(c.link_covered[l]) / c.link_matched[l];
+    const std::string& name = s.model.links()[l].name;
+    std::printf("  %-20s %5.1f %% of %zu matched cells covered\n", name.c_str(), 100 * share,
+                c.link_matched[l]);
+    if (name == "link_2" || name == "link_4") EXPECT_GT(share, 0.25) << name;
+  }
+}
+
+}  // namespace
+}  // namespace edgefit
