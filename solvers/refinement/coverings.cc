@@ -8,10 +8,22 @@ namespace edgefit {
 bool CoveringOptions::IsValid(std::string* error) const {
   if (rounds < 0 || window < 0 || window > 20) {
     *error = "coverings: rounds must be >= 0 and window 0..20";
-  } else if (!(gate > 0.0 && area_offset > 0.0 && point_offset >= area_offset)) {
-    *error = "coverings: need gate > 0 and 0 < area_offset <= point_offset";
+  } else if (!(gate > 0.0 && area_offset > 0.0 && point_offset >= area_offset) ||
+             !(refit_share > 0.0)) {
+    *error = "coverings: need gate > 0, 0 < area_offset <= point_offset, refit_share > 0";
   } else {
     return true;
+  }
+  return false;
+}
+
+bool CoveringsHideALink(const CoveringSummary& summary, const CoveringOptions& options) {
+  for (size_t l = 0; l < summary.link_matched.size(); ++l) {
+    if (summary.link_matched[l] > 0 &&
+        static_cast<double>(summary.link_covered[l]) >=
+            options.refit_share * static_cast<double>(summary.link_matched[l])) {
+      return true;
+    }
   }
   return false;
 }

@@ -83,27 +83,28 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   // precise ICP, then the joints, parents first; the lowest Eq. (9) loss
   // of the whole model wins.
   ChainFitter chain(model, options.chain, options.samples, cad.icp, cad.sweep, &icp, &sweep, say);
-  auto fit_from = [&](const Pose& T_rough, Attempt* attempt) -> Status {
+  auto fit_from = [&](const Pose& T_rough, WeightedIcp* icp, ChainFitter* chain,
+                      Attempt* attempt) -> Status {
     auto stage = std::chrono::steady_clock::now();
     say("base: precise weighted ICP");
     LinkState base_state;
     base_state.T_world_link = T_rough;
     EDGEFIT_RETURN_IF_ERROR(
-        icp.Fit(base_samples, LinkMotion::Free(), options.base.icp, &base_state, &attempt->base));
+        icp->Fit(base_samples, LinkMotion::Free(), options.base.icp, &base_state, &attempt->base));
     attempt->T_world_base = base_state.T_world_link;
     result->timings.base_precise += Since(stage);
     stage = std::chrono::steady_clock::now();
     EDGEFIT_RETURN_IF_ERROR(
-        chain.Fit(attempt->T_world_base, &attempt->q, &attempt->records, &attempt->loss));
+        chain->Fit(attempt->T_world_base, &attempt->q, &attempt->records, &attempt->loss));
     result->timings.chain += Since(stage);
     return Status::Ok();
   };
   Attempt best;
-  EDGEFIT_RETURN_IF_ERROR(fit_from(roughs.front(), &best));
+  EDGEFIT_RETURN_IF_ERROR(fit_from(roughs.front(), &icp, &chain, &best));
   for (size_t k = 1; k < roughs.size(); ++k) {
     say("base: the whole chain from alternative rough pose " + std::to_string(k));
     Attempt other;
-    EDGEFIT_RETURN_IF_ERROR(fit_from(roughs[k], &other));
+    EDGEFIT_RETURN_IF_ERROR(fit_from(roughs[k], &icp, &chain, &other));
     char line[240];
     std::snprintf(line, sizeof(line),
                   "base: alternative rough pose %zu: whole model Eq. 9 loss %.1f against %.1f%s", k,
@@ -116,7 +117,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   }
   result->T_world_base = best.T_world_base;
   result->bodies.push_back(Quality(model, base, base_samples, best.base, options.quality));
-  const Status resolved = model.ResolveDependentJoints(&best.q);
+  Status resolved = model.ResolveDependentJoints(&best.q);
   result->q = best.q;
 
   // Extensions: the stations registered to the fitted model, then the whole
@@ -136,12 +137,45 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   const ScanSet& final_scans = align ? aligned_scans : scans;
   CorrespondenceSearch final_search(&final_scans, weights);
   WeightedIcp final_icp(&final_scans, &final_search, &edges.normals, options.residuals);
+  CellMask covered;
   EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad,
-                                           options, say, result));
+                                           options, say, result, &covered));
+  if (!CoveringsHideALink(result->coverings, options.refinement.coverings)) {
+    // The verdict of every body alone at the final values.
+    EDGEFIT_RETURN_IF_ERROR(
+        JudgeQuality(model, &final_icp, cad, best.records, resolved, options, result));
+    result->timings.total = Since(start);
+    return Status::Ok();
+  }
 
-  // The verdict of every body alone at the final values.
+  // Extension: coverings hide much of a link, and the sequential fit chose
+  // its joints with them: the chain again, from the base, on the scan
+  // without them; then the refinement and the verdict there.
+  say("chain: coverings hide much of a link: fitting the chain again without them");
+  ScanSet clean_scans = final_scans;
+  for (size_t s = 0; s < clean_scans.scans.size(); ++s) {
+    for (size_t i = 0; i < covered[s].size(); ++i) {
+      if (covered[s][i]) clean_scans.scans[s].SetMissing(i);
+    }
+  }
+  CorrespondenceSearch clean_search(&clean_scans, weights);
+  const ScanVisibility clean_visibility(&clean_scans);
+  WeightedIcp clean_icp(&clean_scans, &clean_search, &edges.normals, options.residuals);
+  const JointSweep clean_sweep(&clean_search.lattice(), &clean_visibility);
+  ChainFitter clean_chain(model, options.chain, options.samples, cad.icp, cad.sweep, &clean_icp,
+                          &clean_sweep, say);
+  Attempt refit;
+  EDGEFIT_RETURN_IF_ERROR(fit_from(result->T_world_base, &clean_icp, &clean_chain, &refit));
+  result->T_world_base = refit.T_world_base;
+  result->bodies.front() = Quality(model, base, base_samples, refit.base, options.quality);
+  resolved = model.ResolveDependentJoints(&refit.q);
+  result->q = refit.q;
+  const CoveringSummary first_coverings = result->coverings;
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, clean_scans, &clean_search, weights, cad,
+                                           options, say, result, &covered));
+  result->coverings = first_coverings;  // the cells left out of the second pass
   EDGEFIT_RETURN_IF_ERROR(
-      JudgeQuality(model, &final_icp, cad, best.records, resolved, options, result));
+      JudgeQuality(model, &clean_icp, cad, refit.records, resolved, options, result));
   result->timings.total = Since(start);
   return Status::Ok();
 }

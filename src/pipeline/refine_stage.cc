@@ -31,7 +31,8 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                        FitResult* result) {
+                        FitResult* result, CellMask* covered) {
+  covered->clear();
   const auto start = std::chrono::steady_clock::now();
   const ChainRefinementOptions& refinement = options.refinement.chain;
   if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
@@ -46,16 +47,15 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   // the chain refined again without them.
   const CoveringOptions& coverings = options.refinement.coverings;
   for (int round = 0; refinement.refine && round < coverings.rounds; ++round) {
-    CellMask covered;
     EDGEFIT_RETURN_IF_ERROR(FindCoverings(model, scans, search, chain_samples,
                                           result->T_world_base, result->q, coverings,
-                                          refinement.icp.correspondence.use_lattice, &covered,
+                                          refinement.icp.correspondence.use_lattice, covered,
                                           &result->coverings));
     CellWeights masked(scans.scans.size());
     for (size_t s = 0; s < scans.scans.size(); ++s) {
       masked[s] = weights != nullptr ? (*weights)[s] : std::vector<float>(scans.scans[s].size(), 1.f);
       for (size_t i = 0; i < masked[s].size(); ++i) {
-        if (covered[s][i]) masked[s][i] = 0.f;
+        if ((*covered)[s][i]) masked[s][i] = 0.f;
       }
     }
     char line[200];

@@ -16,6 +16,7 @@
 #include "solvers/joints/body.h"
 #include "solvers/joints/chain_fitter.h"
 #include "solvers/joints/joint_sweep.h"
+#include "solvers/refinement/coverings.h"
 #include "solvers/registration/weighted_icp.h"
 
 namespace edgefit {
@@ -53,10 +54,11 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
 // alone, from result->T_world_base and result->q, in place; then, for
 // options.refinement.coverings.rounds, refined again without the coverings
 // found at the estimate. weights: the search's (nullptr: uniform).
+// *covered: the last round's coverings (empty without rounds).
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                        FitResult* result);
+                        FitResult* result, CellMask* covered);
 
 // The verdict of every jointed body alone at the final values (the base's
 // is in result->bodies already), appended to result->bodies; result->ok
