@@ -10,6 +10,11 @@
 namespace edgefit {
 namespace {
 
+// A jacket face turns away from the link's axis (cosine of the angle between
+// its normal and the radial direction) and is no end face.
+constexpr double kMinOutward = 0.3;
+constexpr double kMaxAlongAxis = 0.7;
+
 int LongestAxis(const Eigen::AlignedBox3d& box) {
   int axis = 0;
   box.sizes().maxCoeff(&axis);
@@ -46,6 +51,8 @@ TriangleMesh MakeJacket(const TriangleMesh& link_mesh, const JacketOptions& opti
   auto along = [&](const Eigen::Vector3d& v) { return (v[axis] - lo) / length - start; };
 
   const std::vector<Eigen::Vector3d> normals = VertexNormals(mesh);
+  const Eigen::Vector3d centre = box.center();
+  const Eigen::Vector3d a = Eigen::Vector3d::Unit(axis);
   TriangleMesh jacket;
   std::vector<int> index(mesh.vertices.size(), -1);
   for (const Eigen::Vector3i& t : mesh.triangles) {
@@ -55,6 +62,17 @@ TriangleMesh MakeJacket(const TriangleMesh& link_mesh, const JacketOptions& opti
       inside = inside && s >= 0.0 && s <= coverage;
     }
     if (!inside) continue;
+    // A sleeve: faces turned away from the link's axis, not its end faces
+    // nor the inner faces of a fork.
+    const Eigen::Vector3d& v0 = mesh.vertices[t[0]];
+    const Eigen::Vector3d n = (mesh.vertices[t[1]] - v0).cross(mesh.vertices[t[2]] - v0);
+    const Eigen::Vector3d m = (v0 + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0 - centre;
+    const Eigen::Vector3d radial = m - m.dot(a) * a;
+    if (!(n.norm() > 0.0) || !(radial.norm() > 0.0)) continue;
+    if (n.normalized().dot(radial.normalized()) < kMinOutward ||
+        std::abs(n.normalized().dot(a)) > kMaxAlongAxis) {
+      continue;
+    }
     Eigen::Vector3i out;
     for (int i = 0; i < 3; ++i) {
       int& k = index[t[i]];

@@ -6,7 +6,8 @@
 // A jacket over link L: L's mesh (link frame) welded and split down to
 // max_edge, the triangles whose vertices all lie in a band along L's
 // longest box axis covering a seeded fraction [coverage_min, coverage_max]
-// of its length, each vertex moved outwards along its area-weighted normal
+// of its length and which face away from that axis (a sleeve: no end faces,
+// no inner faces of a fork), each vertex moved outwards along its area-weighted normal
 // by an offset that varies linearly along the band between two seeded
 // values in [offset_min, offset_max]. Its cells are labelled
 // kLabelAccessory | kJacketFlag.
