@@ -90,9 +90,9 @@ TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
     max = std::max(max, e.error);
     ++revolute;
   }
-  EXPECT_LT(sum / revolute, REVOLUTE_MEAN_BOUND * kDeg);
-  EXPECT_LT(max, REVOLUTE_MAX_BOUND * kDeg);
-  EXPECT_LT(s.errors.base_translation, BASE_BOUND);
+  EXPECT_LT(sum / revolute, 0.05 * kDeg);
+  EXPECT_LT(max, 0.15 * kDeg);
+  EXPECT_LT(s.errors.base_translation, 0.002);
 }
 
 TEST(RealisticFitTest, StationsAgreeAfterAlignment) {
@@ -125,7 +125,9 @@ TEST(RealisticFitTest, JacketsAreFoundOnTheUpperArmAndForearm) {
     const std::string& name = s.model.links()[l].name;
     std::printf("  %-20s %5.1f %% of %zu matched cells covered\n", name.c_str(), 100 * share,
                 c.link_matched[l]);
-    if (name == "link_2" || name == "link_4") EXPECT_GT(share, 0.25) << name;
+    if (name == "link_2" || name == "link_4") {
+      EXPECT_GT(share, 0.25) << name;
+    }
   }
 }
 
