@@ -126,11 +126,23 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   const bool align = options.stations.align && scans.scans.size() > 1;
   if (align) {
     stage = std::chrono::steady_clock::now();
+    // Coverings (jackets) would pull a station towards the side it sees them
+    // on: found at this estimate and left out.
+    const std::vector<SurfaceSamples> chain_samples = ChainSamples(model, cad, options, nullptr);
+    CellMask covered_now;
+    CoveringSummary coverings_now;
+    const bool find_coverings = options.refinement.coverings.rounds > 0;
+    if (find_coverings) {
+      EDGEFIT_RETURN_IF_ERROR(FindCoverings(
+          model, scans, &search, chain_samples, result->T_world_base, result->q,
+          options.refinement.coverings,
+          options.refinement.chain.icp.correspondence.use_lattice, &covered_now, &coverings_now));
+    }
     aligned_scans = scans;
-    EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(model, ChainSamples(model, cad, options, nullptr),
-                                                 result->T_world_base, result->q, nullptr,
-                                                 options.stations, &aligned_scans,
-                                                 &result->stations));
+    EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(
+        model, chain_samples, result->T_world_base, result->q,
+        find_coverings ? &covered_now : nullptr, options.stations, &aligned_scans,
+        &result->stations));
     result->timings.stations = Since(stage);
     say(StationAlignmentLine(result->stations));
   }

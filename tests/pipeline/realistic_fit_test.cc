@@ -18,7 +18,9 @@
 #include "edgefit/model/joint_values.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
+#include "edgefit/model/surface_sampler.h"
 #include "edgefit/scanner/truth.h"
+#include "solvers/registration/station_alignment.h"
 
 namespace edgefit {
 namespace {
@@ -35,8 +37,8 @@ struct RealisticScene {
   FitErrors errors;
 };
 
-const RealisticScene& GetScene() {
-  static RealisticScene* scene = [] {
+RealisticScene* MakeScene(const std::string& sensor, bool fit) {
+  {
     auto* out = new RealisticScene;
     const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
     AttachSpec gun;
@@ -51,19 +53,31 @@ const RealisticScene& GetScene() {
     CHECK(out->model.ResolveDependentJoints(&out->q).ok());
     out->T_world_base = PoseFromXyzRpy({0.5, -0.2, 0.0}, {0.0, 0.0, 15.0 * kDeg});
     AssetScanOptions options;
-    CHECK(ApplySensorPreset("realistic+jackets", &options).ok());
+    CHECK(ApplySensorPreset(sensor, &options).ok());
     options.accessories = true;
     options.scan.spacing = 0.004;
     options.seed = 7;
     CHECK(ScanAsset(out->model, out->q, out->T_world_base, options, &out->scan,
                     &out->T_world_scanners)
               .ok());
+    if (!fit) return out;
     CHECK(Fit(out->model, out->scan.scans, FitOptions(), nullptr, &out->fit).ok());
     CHECK(CompareWithTruth(out->model, out->fit.q, out->fit.T_world_base,
                            NamedJointValues(out->model, out->q), out->T_world_base, &out->errors)
               .ok());
     return out;
-  }();
+  }
+}
+
+// Every effect together.
+const RealisticScene& GetScene() {
+  static RealisticScene* scene = MakeScene("realistic+jackets", true);
+  return *scene;
+}
+
+// Station residuals alone, not fitted.
+const RealisticScene& GetStationScene() {
+  static RealisticScene* scene = MakeScene("stations", false);
   return *scene;
 }
 
@@ -75,7 +89,16 @@ void RelativeError(const std::vector<Pose>& T, const std::vector<Pose>& truth, s
   *rotation = Eigen::AngleAxisd(D.linear()).angle();
 }
 
+// One fit of 1.7 M points takes about 50 s in release, many minutes under
+// the sanitizers: the release suite checks it.
+#if defined(__SANITIZE_ADDRESS__)
+#define EDGEFIT_SKIP_UNDER_SANITIZERS() GTEST_SKIP() << "release suite only"
+#else
+#define EDGEFIT_SKIP_UNDER_SANITIZERS()
+#endif
+
 TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
+  EDGEFIT_SKIP_UNDER_SANITIZERS();
   const RealisticScene& s = GetScene();
   std::printf("  %zu points; base %.3f mm %.4f deg; %.2f s; %s\n", s.scan.scans.TotalValid(),
               s.errors.base_translation * 1e3, s.errors.base_rotation / kDeg,
@@ -85,37 +108,55 @@ TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
   for (const JointError& e : s.errors.joints) {
     std::printf("  %-24s error %.4f %s\n", e.name.c_str(),
                 e.prismatic ? e.error * 1e3 : e.error / kDeg, e.prismatic ? "mm" : "deg");
-    if (e.prismatic) continue;
+    if (e.prismatic) continue;  // the gun's jaw: see README, known limits
     sum += e.error;
     max = std::max(max, e.error);
     ++revolute;
   }
+  // Measured: revolute mean 0.020 deg, largest 0.083 deg (joint_6), base
+  // 0.60 mm (the stations' mean residual is the world frame's); the gun's
+  // jaw 2.7 mm. About twice that fails.
   EXPECT_LT(sum / revolute, 0.05 * kDeg);
   EXPECT_LT(max, 0.15 * kDeg);
-  EXPECT_LT(s.errors.base_translation, 0.002);
+  EXPECT_LT(s.errors.base_translation, 0.0015);
 }
 
-TEST(RealisticFitTest, StationsAgreeAfterAlignment) {
-  const RealisticScene& s = GetScene();
-  std::vector<Pose> written, aligned;
-  for (size_t k = 0; k < s.scan.scans.scans.size(); ++k) {
+// Registered to the model at its true pose (exactly the CAD here), the
+// stations come together. With as-built surfaces a station's correction
+// also absorbs the side of each link it sees; in a fit it also depends on
+// the sequential estimate.
+TEST(RealisticFitTest, StationsRegisteredToTheModelAgree) {
+  const RealisticScene& s = GetStationScene();
+  SamplingOptions sampling;
+  sampling.spacing = 0.004;
+  const std::vector<SurfaceSamples> samples = SampleModelSurfaces(s.model, sampling);
+  ScanSet aligned = s.scan.scans;
+  StationAlignmentSummary summary;
+  ASSERT_TRUE(AlignStationsToModel(s.model, samples, s.T_world_base, s.q, nullptr,
+                                   StationAlignmentOptions(), &aligned, &summary)
+                  .ok());
+  std::vector<Pose> written, corrected;
+  for (size_t k = 0; k < aligned.scans.size(); ++k) {
     written.push_back(s.scan.scans.scans[k].T_world_scanner());
-    aligned.push_back(s.fit.stations.stations[k].correction * written[k]);
+    corrected.push_back(aligned.scans[k].T_world_scanner());
+    EXPECT_LT(summary.stations[k].rms_after, summary.stations[k].rms_before);
   }
   ASSERT_EQ(written.size(), 3u);
   for (size_t i = 0; i < 3; ++i) {
     for (size_t j = i + 1; j < 3; ++j) {
       double t_written = 0, r_written = 0, t_aligned = 0, r_aligned = 0;
       RelativeError(written, s.T_world_scanners, i, j, &t_written, &r_written);
-      RelativeError(aligned, s.T_world_scanners, i, j, &t_aligned, &r_aligned);
+      RelativeError(corrected, s.T_world_scanners, i, j, &t_aligned, &r_aligned);
       std::printf("  stations %zu-%zu: %.3f mm %.4f deg written, %.3f mm %.4f deg aligned\n", i, j,
                   1e3 * t_written, r_written / kDeg, 1e3 * t_aligned, r_aligned / kDeg);
-      EXPECT_LT(t_aligned, 0.5 * t_written);
+      EXPECT_LT(t_aligned, 0.25 * t_written);
+      EXPECT_LT(r_aligned, 0.5 * r_written);
     }
   }
 }
 
 TEST(RealisticFitTest, JacketsAreFoundOnTheUpperArmAndForearm) {
+  EDGEFIT_SKIP_UNDER_SANITIZERS();
   const RealisticScene& s = GetScene();
   const CoveringSummary& c = s.fit.coverings;
   ASSERT_EQ(c.link_matched.size(), s.model.links().size());
