@@ -21,6 +21,7 @@
 #ifndef EDGEFIT_SOLVERS_REFINEMENT_COVERINGS_H_
 #define EDGEFIT_SOLVERS_REFINEMENT_COVERINGS_H_
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ struct CoveringOptions {
   // with accessories but no jacket the largest share was 0.08, with jackets
   // on the upper arm and forearm 0.58 and 0.63.
   double refit_share = 0.2;
+  // A revolute joint that the fit without the coverings puts more than this
+  // away from the fit with them [rad] is ambiguous (not ok): the coverings
+  // decide between two configurations, such as a wrist flipped half a turn.
+  double basin_change = 5.0 * M_PI / 180.0;
 
   bool IsValid(std::string* error) const;
 };

@@ -176,6 +176,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   const JointSweep clean_sweep(&clean_search.lattice(), &clean_visibility);
   ChainFitter clean_chain(model, options.chain, options.samples, cad.icp, cad.sweep, &clean_icp,
                           &clean_sweep, say);
+  const std::vector<double> q_with_coverings = result->q;
   Attempt refit;
   EDGEFIT_RETURN_IF_ERROR(fit_from(result->T_world_base, &clean_icp, &clean_chain, &refit));
   result->T_world_base = refit.T_world_base;
@@ -188,6 +189,29 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   result->coverings = first_coverings;  // the cells left out of the second pass
   EDGEFIT_RETURN_IF_ERROR(
       JudgeQuality(model, &clean_icp, cad, refit.records, resolved, options, result));
+  // A revolute joint that lands in another basin without the coverings than
+  // with them (a wrist flipped half a turn under a jacket that hides the
+  // forearm's tell): the scan cannot decide it.
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    const Joint& joint = model.joints()[j];
+    if (!joint.IsIndependent() || joint.type == JointType::kPrismatic) continue;
+    const double change = std::abs(std::remainder(result->q[j] - q_with_coverings[j], 2.0 * M_PI));
+    if (!(change > options.refinement.coverings.basin_change)) continue;
+    for (BodyQuality& body : result->bodies) {
+      if (body.joint != joint.name) continue;
+      body.ambiguous = true;
+      body.ok = false;
+    }
+    if (result->ok || result->message.empty()) {
+      char line[320];
+      std::snprintf(line, sizeof(line),
+                    "coverings (jackets, covers) hide much of the arm: %s = %.4f without them "
+                    "and %.4f with them; the scan cannot tell which",
+                    joint.name.c_str(), result->q[j], q_with_coverings[j]);
+      result->message = line;
+    }
+    result->ok = false;
+  }
   result->timings.total = Since(start);
   return Status::Ok();
 }
