@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds edgefit (Release) and runs the main job on
-# the bundled data: the bundled spot-welding robot with its weld gun and
-# non-modelled accessories is scanned from 3 scanners (virtual scanner), its
+# the bundled data: the bundled spot-welding robot with its weld gun,
+# non-modelled accessories and protective jackets is scanned from 3 scanners
+# by the virtual scanner's realistic sensor (mixed pixels, incidence noise
+# and dropouts, station residuals, as-built surfaces), its
 # edges are detected and scored against the scanner's ground truth, and the
 # robot is fitted to the scan (base pose and every joint), truth against fit.
 # Then the bundled conveyor (paper Sec. 6) the same way: scanned in its
@@ -17,9 +19,11 @@ mkdir -p "$out"
 echo "== the bundled robot with its weld gun"
 "$edgefit" info --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0
 echo
-echo "== edgefit scan: posture weld_low, accessories, 3 scanners, 1.7 mm spacing, 1 mm noise"
+echo "== edgefit scan: posture weld_low, accessories, jackets, 3 scanners, 1.7 mm spacing, 1 mm noise,"
+echo "   realistic sensor: mixed pixels, incidence noise and dropouts, station residuals, as-built surfaces"
 "$edgefit" scan --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \
   --posture=assets/robot/postures.json:weld_low --base=0.5,-0.2,15 --accessories --seed=7 \
+  --sensor=realistic --jackets \
   --out="$out/robot.ptx" --truth="$out/robot_truth.json" --labels="$out/robot_labels.bin"
 echo
 echo "== ground truth ($out/robot_truth.json)"
@@ -31,6 +35,10 @@ for name, value in t["joints"].items():
 c = t["counts"]
 print(f"  points: {c['valid']} valid of {c['cells']} cells; link {c['link']}, accessory {c['accessory']}, "
       f"background {c['background']}, true-edge {c['true_edge']}")
+if "sensor" in t:
+    s = t["sensor"]
+    print(f"  sensor {s['name']}: {s['counts']['mixed_pixel']} mixed pixels, {s['counts']['jacket']} jacket points "
+          f"(jackets on {', '.join(s['jackets'])})")
 PY
 echo
 echo "== edgefit info --scan: the scan read back, lattice estimated from the points"
@@ -43,7 +51,8 @@ echo "== edgefit edges: paper Sec. 4 on the scan lattice, scored against the tru
 echo "(open $out/robot_edges.ply in CloudCompare or MeshLab: red = w_high)"
 echo
 echo "== edgefit fit: base (cross-section corners + RANSAC, weighted ICP), then every joint"
-echo "   (Eq. 9 sweep + joint-constrained weighted ICP); truth against fit"
+echo "   (Eq. 9 sweep + joint-constrained weighted ICP), the stations registered to the model,"
+echo "   the whole chain refined without the jackets; truth against fit"
 "$edgefit" fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \
   --scan="$out/robot.ptx" --truth="$out/robot_truth.json" --out="$out/result.json" \
   --out_joint_states="$out/joint_states.yaml" --out_urdf="$out/robot_fitted.urdf"
