@@ -54,6 +54,11 @@ struct StationAlignmentOptions {
   double prior_rotation = 0.0005;    // [rad] (0.03 deg)
   double point_sigma = 0.001;        // [m]
   int lattice_window = 2;            // CorrespondenceOptions::window
+  // When a station's correction exceeds this (its origin's shift plus its
+  // rotation times 5 m) [m], the fit runs the chain again on the aligned
+  // stations: the sequential fit chose each joint's basin on stations that
+  // did not agree (the gun's jaw settled centimetres off on them).
+  double refit_correction = 0.0005;
 
   bool IsValid(std::string* error) const;
 };

@@ -3,6 +3,7 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -152,7 +153,13 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   CellMask covered;
   EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad,
                                            options, say, result, &covered));
-  if (!CoveringsHideALink(result->coverings, options.refinement.coverings)) {
+  double moved = 0.0;  // the largest station correction, at 5 m [m]
+  for (const StationCorrection& c : result->stations.stations) {
+    moved = std::max(moved, c.translation + 5.0 * c.rotation);
+  }
+  const bool stations_moved = moved > options.stations.refit_correction;
+  const bool covered_link = CoveringsHideALink(result->coverings, options.refinement.coverings);
+  if (!stations_moved && !covered_link) {
     // The verdict of every body alone at the final values.
     EDGEFIT_RETURN_IF_ERROR(
         JudgeQuality(model, &final_icp, cad, best.records, resolved, options, result));
@@ -160,12 +167,15 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
     return Status::Ok();
   }
 
-  // Extension: coverings hide much of a link, and the sequential fit chose
-  // its joints with them: the chain again, from the base, on the scan
-  // without them; then the refinement and the verdict there.
-  say("chain: coverings hide much of a link: fitting the chain again without them");
+  // Extension: the sequential fit chose every joint's basin on stations
+  // that did not agree, or with coverings hiding much of a link: the chain
+  // again, from the base, on the aligned stations without the coverings;
+  // then the refinement and the verdict there.
+  say(std::string("chain: ") +
+      (stations_moved ? "the stations moved" : "coverings hide much of a link") +
+      ": fitting the chain again on the aligned stations without the coverings");
   ScanSet clean_scans = final_scans;
-  for (size_t s = 0; s < clean_scans.scans.size(); ++s) {
+  for (size_t s = 0; s < covered.size(); ++s) {  // empty without covering rounds
     for (size_t i = 0; i < covered[s].size(); ++i) {
       if (covered[s][i]) clean_scans.scans[s].SetMissing(i);
     }
@@ -192,7 +202,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   // A revolute joint that lands in another basin without the coverings than
   // with them (a wrist flipped half a turn under a jacket that hides the
   // forearm's tell): the scan cannot decide it.
-  for (size_t j = 0; j < model.joints().size(); ++j) {
+  for (size_t j = 0; covered_link && j < model.joints().size(); ++j) {
     const Joint& joint = model.joints()[j];
     if (!joint.IsIndependent() || joint.type == JointType::kPrismatic) continue;
     const double change = std::abs(std::remainder(result->q[j] - q_with_coverings[j], 2.0 * M_PI));

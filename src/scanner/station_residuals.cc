@@ -2,19 +2,9 @@
 
 #include <cmath>
 
-#include "edgefit/core/split_mix64.h"
+#include "edgefit/core/random_unit.h"
 
 namespace edgefit {
-namespace {
-
-Eigen::Vector3d RandomUnit(SplitMix64* rng) {
-  const double z = rng->Uniform(-1.0, 1.0);
-  const double a = rng->Uniform(0.0, 2.0 * M_PI);
-  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {s * std::cos(a), s * std::sin(a), z};
-}
-
-}  // namespace
 
 bool StationResidualOptions::IsValid(std::string* error) const {
   if (!(translation_min >= 0.0 && translation_min <= translation_max && translation_max < 1.0)) {
@@ -34,9 +24,9 @@ std::vector<Pose> PerturbStationPoses(const std::vector<Pose>& T_world_true,
   for (size_t i = 0; i < written.size(); ++i) {
     SplitMix64 rng = SplitMix64::Stream(options.seed, i + 1);
     const double angle = rng.Uniform(options.rotation_min, options.rotation_max);
-    const Eigen::Vector3d axis = RandomUnit(&rng);
+    const Eigen::Vector3d axis = RandomUnitVector(&rng);
     const double length = rng.Uniform(options.translation_min, options.translation_max);
-    const Eigen::Vector3d shift = length * RandomUnit(&rng);
+    const Eigen::Vector3d shift = length * RandomUnitVector(&rng);
     written[i].linear() = Eigen::AngleAxisd(angle, axis).toRotationMatrix() * T_world_true[i].linear();
     written[i].translation() = T_world_true[i].translation() + shift;
   }

@@ -1,20 +1,14 @@
 #include "edgefit/scene/as_built.h"
 
 #include <cmath>
+#include <algorithm>
 #include <map>
 #include <utility>
 
-#include "edgefit/core/split_mix64.h"
+#include "edgefit/core/random_unit.h"
 
 namespace edgefit {
 namespace {
-
-Eigen::Vector3d RandomUnit(SplitMix64* rng) {
-  const double z = rng->Uniform(-1.0, 1.0);
-  const double a = rng->Uniform(0.0, 2.0 * M_PI);
-  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {s * std::cos(a), s * std::sin(a), z};
-}
 
 double LongestEdge(const TriangleMesh& mesh) {
   double longest = 0.0;
@@ -47,8 +41,8 @@ AsBuiltField::AsBuiltField(const AsBuiltOptions& options, int link) {
   double sum = 0.0;
   for (int k = 0; k < 4; ++k) {
     const double wavelength = rng.Uniform(options.wavelength_min, options.wavelength_max);
-    wave_[k] = RandomUnit(&rng) * (2.0 * M_PI / wavelength);
-    direction_[k] = RandomUnit(&rng);
+    wave_[k] = RandomUnitVector(&rng) * (2.0 * M_PI / wavelength);
+    direction_[k] = RandomUnitVector(&rng);
     weight_[k] = rng.Uniform(0.5, 1.0);
     phase_[k] = rng.Uniform(0.0, 2.0 * M_PI);
     sum += weight_[k];
