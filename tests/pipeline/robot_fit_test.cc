@@ -235,6 +235,10 @@ TEST(RobotFitTest, ScanWithoutTheRobotIsNotOk) {
 // A scan of another robot (the two-axis balancer arm of assets/models)
 // fitted with the bundled robot's model: not ok, with a message.
 TEST(RobotFitTest, ScanOfAnotherRobotIsNotOk) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "the release suite checks it; under the sanitizers it runs the stages "
+                  "ScanWithoutTheRobotIsNotOk runs, for over 4 minutes";
+#endif
   const RobotScene& s = GetScene();
   KinematicModel other;
   ASSERT_TRUE(
