@@ -124,29 +124,9 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   // Extensions: the stations registered to the fitted model, then the whole
   // chain at once on them, and its covariance.
   ScanSet aligned_scans;
-  const bool align = options.stations.align && scans.scans.size() > 1;
-  if (align) {
-    stage = std::chrono::steady_clock::now();
-    // Coverings (jackets) would pull a station towards the side it sees them
-    // on: found at this estimate and left out.
-    const std::vector<SurfaceSamples> chain_samples = ChainSamples(model, cad, options, nullptr);
-    CellMask covered_now;
-    CoveringSummary coverings_now;
-    const bool find_coverings = options.refinement.coverings.rounds > 0;
-    if (find_coverings) {
-      EDGEFIT_RETURN_IF_ERROR(FindCoverings(
-          model, scans, &search, chain_samples, result->T_world_base, result->q,
-          options.refinement.coverings,
-          options.refinement.chain.icp.correspondence.use_lattice, &covered_now, &coverings_now));
-    }
-    aligned_scans = scans;
-    EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(
-        model, chain_samples, result->T_world_base, result->q,
-        find_coverings ? &covered_now : nullptr, options.stations, &aligned_scans,
-        &result->stations));
-    result->timings.stations = Since(stage);
-    say(StationAlignmentLine(result->stations));
-  }
+  bool align = false;
+  EDGEFIT_RETURN_IF_ERROR(AlignStationsStage(model, scans, &search, cad, options, say, result,
+                                             &aligned_scans, &align));
   const ScanSet& final_scans = align ? aligned_scans : scans;
   CorrespondenceSearch final_search(&final_scans, weights);
   WeightedIcp final_icp(&final_scans, &final_search, &edges.normals, options.residuals);
@@ -199,29 +179,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   result->coverings = first_coverings;  // the cells left out of the second pass
   EDGEFIT_RETURN_IF_ERROR(
       JudgeQuality(model, &clean_icp, cad, refit.records, resolved, options, result));
-  // A revolute joint that lands in another basin without the coverings than
-  // with them (a wrist flipped half a turn under a jacket that hides the
-  // forearm's tell): the scan cannot decide it.
-  for (size_t j = 0; covered_link && j < model.joints().size(); ++j) {
-    const Joint& joint = model.joints()[j];
-    if (!joint.IsIndependent() || joint.type == JointType::kPrismatic) continue;
-    const double change = std::abs(std::remainder(result->q[j] - q_with_coverings[j], 2.0 * M_PI));
-    if (!(change > options.refinement.coverings.basin_change)) continue;
-    for (BodyQuality& body : result->bodies) {
-      if (body.joint != joint.name) continue;
-      body.ambiguous = true;
-      body.ok = false;
-    }
-    if (result->ok || result->message.empty()) {
-      char line[320];
-      std::snprintf(line, sizeof(line),
-                    "coverings (jackets, covers) hide much of the arm: %s = %.4f without them "
-                    "and %.4f with them; the scan cannot tell which",
-                    joint.name.c_str(), result->q[j], q_with_coverings[j]);
-      result->message = line;
-    }
-    result->ok = false;
-  }
+  if (covered_link) MarkBasinChanges(model, q_with_coverings, options, result);
   result->timings.total = Since(start);
   return Status::Ok();
 }

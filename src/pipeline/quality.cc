@@ -1,4 +1,5 @@
 // The quality verdict of every body at the final values (stages.h).
+#include <cmath>
 #include <cstdio>
 
 #include "stages.h"
@@ -67,6 +68,30 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     result->message = line;
   }
   return Status::Ok();
+}
+
+void MarkBasinChanges(const KinematicModel& model, const std::vector<double>& q_first,
+                      const FitOptions& options, FitResult* result) {
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    const Joint& joint = model.joints()[j];
+    if (!joint.IsIndependent() || joint.type == JointType::kPrismatic) continue;
+    const double change = std::abs(std::remainder(result->q[j] - q_first[j], 2.0 * M_PI));
+    if (!(change > options.refinement.coverings.basin_change)) continue;
+    for (BodyQuality& body : result->bodies) {
+      if (body.joint != joint.name) continue;
+      body.ambiguous = true;
+      body.ok = false;
+    }
+    if (result->ok || result->message.empty()) {
+      char line[320];
+      std::snprintf(line, sizeof(line),
+                    "coverings (jackets, covers) hide much of the arm: %s = %.4f without them "
+                    "and %.4f with them; the scan cannot tell which",
+                    joint.name.c_str(), result->q[j], q_first[j]);
+      result->message = line;
+    }
+    result->ok = false;
+  }
 }
 
 }  // namespace edgefit

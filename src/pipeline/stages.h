@@ -67,6 +67,21 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
                     const std::vector<JointRecord>& records, const Status& resolved,
                     const FitOptions& options, FitResult* result);
 
+// Extension: every station registered to the model at result's estimate
+// (options.stations), the coverings found there left out; *aligned gets
+// the scans with the corrected stations and *done whether they were made
+// (more than one station and options.stations.align).
+Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
+                          CorrespondenceSearch* search, const CadSamples& cad,
+                          const FitOptions& options, const ProgressFn& say, FitResult* result,
+                          ScanSet* aligned, bool* done);
+
+// After the second pass (the chain fitted again without the coverings): a
+// revolute joint more than options.refinement.coverings.basin_change from
+// its value in q_first (the first pass's) is ambiguous, and the fit not ok.
+void MarkBasinChanges(const KinematicModel& model, const std::vector<double>& q_first,
+                      const FitOptions& options, FitResult* result);
+
 // The quality of a body from an ICP summary at its final pose.
 BodyQuality Quality(const KinematicModel& model, const Body& body, const SurfaceSamples& samples,
                     const WeightedIcpSummary& summary, const QualityOptions& options);
