@@ -36,9 +36,8 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   const auto start = std::chrono::steady_clock::now();
   const ChainRefinementOptions& refinement = options.refinement.chain;
   if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
-  std::vector<bool> point_to_point;
-  const std::vector<SurfaceSamples> chain_samples =
-      ChainSamples(model, cad, options, &point_to_point);
+  const std::vector<SurfaceSamples>& chain_samples = cad.chain;
+  const std::vector<bool>& point_to_point = cad.chain_point_to_point;
   EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples, point_to_point,
                                       refinement, options.residuals, &result->T_world_base,
                                       &result->q, &result->chain_refinement));

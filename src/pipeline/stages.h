@@ -27,9 +27,12 @@ inline double Since(std::chrono::steady_clock::time_point start) {
 }
 
 // The CAD samples of every link (model.links() order, link frame): dense
-// for the precise stages, sparse for the sweeps.
+// for the precise stages, sparse for the sweeps; and per body for the
+// whole-chain stages (stations, refinement, coverings), made once by
+// ChainSamples, with chain_point_to_point for its prismatic bodies.
 struct CadSamples {
-  std::vector<SurfaceSamples> icp, sweep;
+  std::vector<SurfaceSamples> icp, sweep, chain;
+  std::vector<bool> chain_point_to_point;
 };
 
 // Sec. 5.1.1 / 6.1: the rough base poses to fit from, best first, into

@@ -16,7 +16,7 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
   const auto start = std::chrono::steady_clock::now();
   // Coverings (jackets) would pull a station towards the side it sees them
   // on: found at this estimate and left out.
-  const std::vector<SurfaceSamples> chain_samples = ChainSamples(model, cad, options, nullptr);
+  const std::vector<SurfaceSamples>& chain_samples = cad.chain;
   CellMask covered;
   CoveringSummary coverings;
   const bool find_coverings = options.refinement.coverings.rounds > 0;
