@@ -22,7 +22,8 @@
 // Presets from published figures (Chaudhry, Salido-Monzu, Wieser, Remote
 // Sens. 13(4):615, 2021, and the makers' data sheets): "faro_focus" 2.5 mm
 // exit, 0.19 mrad; "leica_p40" 3.5 mm, 0.23 mrad; "zf_5016" 0.3 mrad
-// half-angle (0.6 mrad full) and a 1 mm beam sigma at 6 m (about 0.4 mm exit).
+// half-angle (0.6 mrad full); its 0.4 mm exit is our estimate from the
+// paper's 1 mm beam sigma at 6 m.
 #ifndef EDGEFIT_SCANNER_BEAM_FOOTPRINT_H_
 #define EDGEFIT_SCANNER_BEAM_FOOTPRINT_H_
 

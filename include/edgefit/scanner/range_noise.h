@@ -4,7 +4,8 @@
 // et al., "Incidence angle influence on the quality of terrestrial laser
 // scanning points", ISPRS Laser Scanning 2009; Wujanz et al., "An
 // intensity-based stochastic model for terrestrial laser scanners", Sensors
-// 18(7):2187, 2018, where sigma ~ I^-0.5 fits well). With the relative
+// 18(7):2187, 2018, model sigma as a power of the intensity). The exponent
+// -1/2 below is our choice, not fitted to a scanner. With the relative
 // signal
 //
 //   S = (rho / reference_reflectance) * |cos theta|
