@@ -15,7 +15,8 @@
 //   robot_accuracy --urdf=assets/conveyor/conveyor.urdf
 //       --postures=assets/conveyor/postures.json --spacing_mm=3   (kind: auto)
 // A random posture that buries a link with a mesh inside others (a
-// self-collision: the generator does not check them) is redrawn.
+// self-collision: the generator does not check them) is redrawn
+// (RandomPostureCases).
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
@@ -29,13 +30,11 @@
 
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/bench/fit_errors.h"
-#include "edgefit/core/split_mix64.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
-#include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/truth.h"
 
 DEFINE_string(urdf, "", "The robot's URDF.");
@@ -111,35 +110,8 @@ AssetScanOptions CaseScanOptions(const Case& c, bool accessories) {
   return options;
 }
 
-// The first link with a mesh that none of 8 scanners around the robot sees
-// (3 mm spacing, no noise, accessories or clutter), or "" when every one is
-// seen. Random postures are not checked for self-collision
-// (random_joints.h): a forearm folded into the upper arm buries the whole
-// wrist, and no scan shows those joints. (With the benchmark's 3 scanners
-// a link can also go unseen by occlusion alone; the fit must handle that,
-// so the test uses more scanners than the fit's scan.)
-std::string BuriedLink(const KinematicModel& model, const Case& c) {
-  AssetScanOptions options;
-  options.clutter = 0;
-  options.scanners = 8;
-  options.scan.spacing = 0.003;
-  options.scan.noise_sigma = 0.0;
-  options.seed = c.seed;
-  VirtualScan scan;
-  const Status status = ScanAsset(model, c.q, c.T_world_base, options, &scan, nullptr);
-  CHECK(status.ok()) << c.name << ": " << status.message();
-  const LabelCounts counts = CountLabels(scan, model);
-  for (size_t k = 0; k < counts.per_link.size(); ++k) {
-    if (counts.per_link[k].second == 0 && !model.links()[k].mesh.empty()) {
-      return counts.per_link[k].first;
-    }
-  }
-  return "";
-}
-
-// Each case draws from its own streams (named postures 0.., random ones
-// 1000..), so --only and --postures do not change the other cases. A random
-// posture in which a link with a mesh is buried (BuriedLink) is redrawn.
+// Named postures, then the random ones (RandomPostureCases: streams 1000..,
+// so --only and --postures do not change the other cases).
 std::vector<Case> MakeCases(const KinematicModel& model) {
   std::vector<Case> cases;
   if (!FLAGS_postures.empty()) {
@@ -147,20 +119,10 @@ std::vector<Case> MakeCases(const KinematicModel& model) {
         NamedPostureCases(model, FLAGS_postures, FLAGS_seed, FLAGS_base_range_m, &cases);
     CHECK(s.ok()) << s.message();
   }
-  for (int i = 0; i < FLAGS_random; ++i) {
-    Case c = MakeBenchCase("random_" + std::to_string(i), FLAGS_seed,
-                           1000 + static_cast<uint64_t>(i), FLAGS_base_range_m);
-    for (uint64_t draw = 0;; ++draw) {
-      CHECK(RandomJointValuesAboveFloor(model, c.T_world_base, 0.0, Mix64(c.seed + draw), &c.q))
-          << c.name;
-      const std::string buried = BuriedLink(model, c);
-      if (buried.empty()) break;
-      CHECK_LT(draw, 16u) << c.name << ": every draw buries a link";
-      std::fprintf(stderr, "%s: posture redrawn, %s is seen from none of 8 scanners\n",
-                   c.name.c_str(), buried.c_str());
-    }
-    cases.push_back(c);
-  }
+  const Status s = RandomPostureCases(
+      model, FLAGS_random, FLAGS_seed, FLAGS_base_range_m, &cases,
+      [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+  CHECK(s.ok()) << s.message();
   return cases;
 }
 

@@ -41,8 +41,12 @@ DEFINE_string(assets, "robot,conveyor", "Bench: robot and/or conveyor.");
 DEFINE_string(robot_urdf, "assets/robot/robot.urdf", "Bench: the robot's URDF.");
 DEFINE_string(robot_attach, "assets/robot/weld_gun.urdf@tool0",
               "Bench: the robot's end effectors (as --attach).");
-DEFINE_string(robot_postures, "assets/robot/postures.json", "Bench: the robot's postures.");
+DEFINE_string(robot_postures, "assets/robot/postures.json",
+              "Bench: the robot's named postures (\"\": none, only --random_postures).");
 DEFINE_string(conveyor_urdf, "assets/conveyor/conveyor.urdf", "Bench: the conveyor's URDF.");
+DEFINE_int32(random_postures, 0,
+             "Bench: seeded random postures per asset after the named ones (random_0, ...; a "
+             "posture that buries a link is redrawn).");
 DEFINE_string(conveyor_postures, "assets/conveyor/postures.json",
               "Bench: the conveyor's postures.");
 DEFINE_string(scenes, "without,with", "Bench: scenes without and/or with accessories.");
@@ -222,9 +226,15 @@ int RunBench(const Command& command) {
     for (int repeat = 0; repeat < FLAGS_repeats; ++repeat) {
       const uint64_t seed = FLAGS_seed + static_cast<uint64_t>(repeat);
       std::vector<BenchCase> cases;
+      const std::string& postures = robot ? FLAGS_robot_postures : FLAGS_conveyor_postures;
+      if (!postures.empty()) {
+        EDGEFIT_RETURN_IF_ERROR_EXIT(
+            command, NamedPostureCases(model, postures, seed, FLAGS_base_range_m, &cases));
+      }
       EDGEFIT_RETURN_IF_ERROR_EXIT(
-          command, NamedPostureCases(model, robot ? FLAGS_robot_postures : FLAGS_conveyor_postures,
-                                     seed, FLAGS_base_range_m, &cases));
+          command, RandomPostureCases(model, FLAGS_random_postures, seed, FLAGS_base_range_m,
+                                      &cases, [](const std::string& line) { Progress(line); }));
+      if (cases.empty()) return BadInput(command, asset + ": no postures (named or random)");
       for (const BenchCase& c : cases) {
         if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
         for (const std::string& scenery : sceneries)
@@ -242,7 +252,11 @@ int RunBench(const Command& command) {
               const std::string scene = asset + " " + c.name + ", " + scenery + " accessories, " +
                                         sensor + " sensor" +
                                         (axes.repeat ? ", seed " + std::to_string(seed) : "");
-              Progress("bench: scanning " + scene);
+              Progress("bench: scanning " + scene + " (edgefit scan " + ScanFlagsFor(model, c) +
+                       (scan_options.accessories ? " --accessories" : "") + " --sensor=" + sensor +
+                       (FLAGS_jackets ? " --jackets" : "") + " --spacing_mm=" +
+                       std::to_string(FLAGS_spacing_mm) + " --noise_mm=" + std::to_string(noise) +
+                       " --scanners=" + std::to_string(scan_setting.scanners) + ")");
               VirtualScan scan;
               EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScanBenchCase(model, c, scan_options, &scan));
               for (const FitSetting& fit : fits) {

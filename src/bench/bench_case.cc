@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/joint_values.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/truth.h"
 
 namespace edgefit {
@@ -33,6 +36,88 @@ Status NamedPostureCases(const KinematicModel& model, const std::string& posture
     cases->push_back(std::move(c));
   }
   return Status::Ok();
+}
+
+namespace {
+
+// The first link with a mesh that none of 8 scanners around the model sees
+// (3 mm spacing, no noise, accessories or clutter), or "" when every one is
+// seen. With a bench's 3 scanners a link can also go unseen by occlusion
+// alone; the fit must handle that, so this check uses more scanners.
+Status BuriedLink(const KinematicModel& model, const BenchCase& c, std::string* buried) {
+  AssetScanOptions options;
+  options.clutter = 0;
+  options.scanners = 8;
+  options.scan.spacing = 0.003;
+  options.scan.noise_sigma = 0.0;
+  options.seed = c.seed;
+  VirtualScan scan;
+  EDGEFIT_RETURN_IF_ERROR(ScanAsset(model, c.q, c.T_world_base, options, &scan, nullptr));
+  const LabelCounts counts = CountLabels(scan, model);
+  buried->clear();
+  for (size_t k = 0; k < counts.per_link.size(); ++k) {
+    if (counts.per_link[k].second == 0 && !model.links()[k].mesh.empty()) {
+      *buried = counts.per_link[k].first;
+      break;
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status RandomPostureCases(const KinematicModel& model, int count, uint64_t seed, double base_range,
+                          std::vector<BenchCase>* cases,
+                          const std::function<void(const std::string&)>& redrawn) {
+  constexpr uint64_t kDraws = 16;
+  for (int i = 0; i < count; ++i) {
+    BenchCase c = MakeBenchCase("random_" + std::to_string(i), seed,
+                                1000 + static_cast<uint64_t>(i), base_range);
+    std::string buried;
+    for (uint64_t draw = 0;; ++draw) {
+      if (draw == kDraws) {
+        return Status::Error(c.name + ": every one of " + std::to_string(kDraws) +
+                             " random postures buries " + buried);
+      }
+      if (!RandomJointValuesAboveFloor(model, c.T_world_base, 0.0, Mix64(c.seed + draw), &c.q)) {
+        return Status::Error(c.name + ": no random posture of the model stays above the floor");
+      }
+      EDGEFIT_RETURN_IF_ERROR(BuriedLink(model, c, &buried));
+      if (buried.empty()) break;
+      if (redrawn) redrawn(c.name + ": posture redrawn, " + buried + " is seen from none of 8 scanners");
+    }
+    cases->push_back(std::move(c));
+  }
+  return Status::Ok();
+}
+
+namespace {
+
+// The shortest decimal that reads back as the same double.
+std::string Exact(double value) {
+  char text[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof(text), "%.*g", digits, value);
+    if (std::strtod(text, nullptr) == value) break;
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string ScanFlagsFor(const KinematicModel& model, const BenchCase& bench_case) {
+  const Eigen::Vector3d t = bench_case.T_world_base.translation();
+  const Eigen::Matrix3d R = bench_case.T_world_base.rotation();
+  std::string flags = "--base=" + Exact(t.x()) + "," + Exact(t.y()) + "," +
+                      Exact(std::atan2(R(1, 0), R(0, 0)) * 180.0 / M_PI) +
+                      " --seed=" + std::to_string(bench_case.seed) + " --joints=";
+  bool first = true;
+  for (size_t j = 0; j < model.joints().size() && j < bench_case.q.size(); ++j) {
+    if (!model.joints()[j].IsIndependent()) continue;
+    flags += (first ? "" : ",") + model.joints()[j].name + "=" + Exact(bench_case.q[j]);
+    first = false;
+  }
+  return flags;
 }
 
 Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,

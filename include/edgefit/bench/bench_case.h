@@ -6,6 +6,7 @@
 #define EDGEFIT_BENCH_BENCH_CASE_H_
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,22 @@ BenchCase MakeBenchCase(const std::string& name, uint64_t seed, uint64_t stream,
 // not fit the model.
 Status NamedPostureCases(const KinematicModel& model, const std::string& postures_file,
                          uint64_t seed, double base_range, std::vector<BenchCase>* cases);
+
+// `count` seeded random postures ("random_0", ...) above the floor
+// (RandomJointValuesAboveFloor), case i on stream 1000 + i, so adding named
+// postures or more random ones does not change the others. Random postures
+// are not checked for self-collision: a posture that buries a link with a
+// mesh so that none of 8 scanners around the robot sees it (a forearm
+// folded into the upper arm) is redrawn, at most 16 times. `redrawn` (may
+// be null) is told each redraw: the case and the buried link.
+Status RandomPostureCases(const KinematicModel& model, int count, uint64_t seed, double base_range,
+                          std::vector<BenchCase>* cases,
+                          const std::function<void(const std::string&)>& redrawn = nullptr);
+
+// The `edgefit scan` flags that make the case's scene again: --base, --seed
+// and --joints (radians, every independent joint), for rerunning one case
+// of a bench by hand.
+std::string ScanFlagsFor(const KinematicModel& model, const BenchCase& bench_case);
 
 // A failed fit (the bound at which a benchmark counts a fit as failed): a
 // revolute joint off by more than this [rad], a prismatic one by more than
