@@ -12,6 +12,28 @@
 
 namespace edgefit {
 
+std::vector<bool> ChainFitter::PlacedApart(const Pose& T_world_base, const std::vector<double>& q,
+                                           const std::vector<double>& q_other,
+                                           const std::vector<bool>& in) const {
+  const std::vector<Pose> T = model_.ForwardKinematics(q, T_world_base);
+  const std::vector<Pose> T_other = model_.ForwardKinematics(q_other, T_world_base);
+  std::vector<double> moved(in.size(), 0.0);  // the farthest any sample moves [m]
+  double most = 0.0;
+  for (size_t l = 0; l < in.size(); ++l) {
+    if (!in[l]) continue;
+    for (const Eigen::Vector3f& p : sweep_samples_[l].points) {
+      const Eigen::Vector3d x = p.cast<double>();
+      moved[l] = std::max(moved[l], (T[l] * x - T_other[l] * x).norm());
+    }
+    most = std::max(most, moved[l]);
+  }
+  std::vector<bool> apart(in.size(), false);
+  for (size_t l = 0; l < in.size(); ++l) {
+    apart[l] = in[l] && !sweep_samples_[l].points.empty() && moved[l] >= options_.alike_share * most;
+  }
+  return apart;
+}
+
 Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
                                       std::vector<double>* q, bool* switched) {
   *switched = false;
@@ -39,9 +61,11 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     const double distinct = j.type == JointType::kPrismatic ? options_.sweep.distinct_prismatic
                                                             : options_.sweep.distinct_revolute;
     if (separation < 0.5 * distinct) continue;  // back in the same basin: no alternative
-    size_t samples = 0;
-    const double loss = SubtreeLoss(T_world_base, *q, j.child_link, &samples);
-    const double other_loss = SubtreeLoss(T_world_base, q_other, j.child_link, &samples);
+    size_t samples = 0, placed_apart_samples = 0;
+    (void)SubtreeLoss(T_world_base, *q, j.child_link, &samples);
+    const std::vector<bool> apart = PlacedApart(T_world_base, *q, q_other, below);
+    const double loss = LinksLoss(T_world_base, *q, apart, &placed_apart_samples);
+    const double other_loss = LinksLoss(T_world_base, q_other, apart, &placed_apart_samples);
     const bool take_other = other_loss < loss;
     const double alternative = take_other ? (*q)[jj] : q_other[jj];
     if (take_other) {

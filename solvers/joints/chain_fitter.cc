@@ -38,6 +38,7 @@ bool ChainOptions::IsValid(std::string* error) const {
   if (!(pinning_revolute > 0.0) || !(pinning_mean_loss >= 0.0)) {
     return fail("pinning_revolute must be > 0 and pinning_mean_loss >= 0");
   }
+  if (!(alike_share >= 0.0 && alike_share <= 1.0)) return fail("alike_share must be in [0, 1]");
   if (max_passes_after_switch < 0 || !(settle_tolerance_rad > 0.0) || !(settle_tolerance_m > 0.0)) {
     return fail("max_passes_after_switch must be >= 0 and the settle tolerances > 0");
   }
@@ -287,13 +288,18 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
 
 double ChainFitter::SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,
                                 size_t* samples) const {
+  return LinksLoss(T_world_base, q, SubtreeMask(link), samples);
+}
+
+double ChainFitter::LinksLoss(const Pose& T_world_base, const std::vector<double>& q,
+                              const std::vector<bool>& in, size_t* samples) const {
   const std::vector<Pose> T_world_link = model_.ForwardKinematics(q, T_world_base);
   double loss = 0.0;
   *samples = 0;
-  for (const int l : SubtreeLinks(model_, link)) {
-    const SurfaceSamples& s = sweep_samples_[static_cast<size_t>(l)];
-    if (s.points.empty()) continue;
-    loss += sweep_->LossAt(s, T_world_link[static_cast<size_t>(l)], options_.sweep);
+  for (size_t l = 0; l < in.size(); ++l) {
+    const SurfaceSamples& s = sweep_samples_[l];
+    if (!in[l] || s.points.empty()) continue;
+    loss += sweep_->LossAt(s, T_world_link[l], options_.sweep);
     *samples += s.size();
   }
   return loss;

@@ -71,6 +71,15 @@ struct ChainOptions {
   // The bound is half the smallest right margin.
   double ambiguity_check_loss = 0.002;
   double ambiguity_mean_loss = 0.00006;
+  // The two values are compared on the bodies they place differently: a
+  // body of the subtree whose samples move by less than alike_share of the
+  // most any body's samples move between the two (a wrist flip's flange
+  // and gun: the flip turns the forearm half a turn, the flange only by
+  // the two branches' fitting differences) says only how well each
+  // branch's later fits went, not which value is right, and is left out of
+  // the loss difference. The per-sample margin still divides by the whole
+  // subtree's samples, so the bounds above keep their scale.
+  double alike_share = 0.25;
   // A revolute joint moved by pinning_revolute (a failed fit's bound) either
   // way must cost on average at least pinning_mean_loss per sample more
   // [m], else it is ambiguous. In 69 fits of the bundled robot the lower of
@@ -129,6 +138,9 @@ class ChainFitter {
   // *samples counts the sweep samples scored.
   double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,
                      size_t* samples) const;
+  // The same over the links with in[l] set only.
+  double LinksLoss(const Pose& T_world_base, const std::vector<double>& q,
+                   const std::vector<bool>& in, size_t* samples) const;
 
  private:
   // The chain pass: per joint the Eq. (9) sweep and the joint ICP; a
@@ -164,6 +176,12 @@ class ChainFitter {
   // value as its alternative (a round link that nothing below it tells).
   void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
                     const std::vector<double>& q) const;
+  // The links with in[l] that q and q_other place apart (see
+  // ChainOptions::alike_share): the ones a comparison of the two should
+  // score.
+  std::vector<bool> PlacedApart(const Pose& T_world_base, const std::vector<double>& q,
+                                const std::vector<double>& q_other,
+                                const std::vector<bool>& in) const;
   // in[l]: link l is `link` or below it (link -1: every link).
   std::vector<bool> SubtreeMask(int link) const;
 
