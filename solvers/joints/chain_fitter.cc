@@ -102,7 +102,11 @@ Status ChainFitter::Fit(const Pose& T_world_base, std::vector<double>* q,
                         std::vector<JointRecord>* records, double* loss) {
   EDGEFIT_RETURN_IF_ERROR(FitJoints(T_world_base, q, records));
   if (options_.refine_subtrees) {
+    const std::vector<double> swept = *q;
     EDGEFIT_RETURN_IF_ERROR(RefineSubtrees(T_world_base, 0, -1, records, q));
+    bool reswept = false;
+    EDGEFIT_RETURN_IF_ERROR(ResweepMoved(T_world_base, swept, records, q, &reswept));
+    if (reswept) EDGEFIT_RETURN_IF_ERROR(RefineSubtrees(T_world_base, 0, -1, records, q));
     bool switched = false;
     EDGEFIT_RETURN_IF_ERROR(CheckAlternatives(T_world_base, records, q, &switched));
     for (int pass = 0; switched && pass < options_.max_passes_after_switch; ++pass) {
@@ -146,6 +150,28 @@ Status ChainFitter::FitJoints(const Pose& T_world_base, std::vector<double>* q,
                        options_.resweep_tolerance_m)) {
       break;
     }
+  }
+  return Status::Ok();
+}
+
+Status ChainFitter::ResweepMoved(const Pose& T_world_base, const std::vector<double>& swept,
+                                 std::vector<JointRecord>* records, std::vector<double>* q,
+                                 bool* reswept) {
+  *reswept = false;
+  const std::vector<Pose> T_swept = model_.ForwardKinematics(swept, T_world_base);
+  for (JointRecord& record : *records) {
+    const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+    const size_t parent = static_cast<size_t>(j.parent_link);
+    const Pose T_now = model_.ForwardKinematics(*q, T_world_base)[parent];
+    const Eigen::AngleAxisd turned(T_swept[parent].rotation().transpose() * T_now.rotation());
+    if (std::abs(turned.angle()) <= options_.resweep_tolerance_rad &&
+        (T_now.translation() - T_swept[parent].translation()).norm() <=
+            options_.resweep_tolerance_m) {
+      continue;
+    }
+    say_("chain: " + j.name + " again: the subtree pass moved the link it hangs from");
+    EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &record, /*resweep=*/true));
+    *reswept = true;
   }
   return Status::Ok();
 }

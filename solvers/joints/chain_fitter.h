@@ -160,6 +160,15 @@ class ChainFitter {
   // subtree (a link; -1: all).
   Status RefineSubtrees(const Pose& T_world_base, size_t first, int only_below,
                         std::vector<JointRecord>* records, std::vector<double>* q);
+  // Extension: a joint swept while the link it hangs from was elsewhere (the
+  // subtree pass turned that link by more than resweep_tolerance_rad or
+  // moved it by more than resweep_tolerance_m since `swept`, the values
+  // after the chain pass) is fitted again, as in a resweep: a revolute one
+  // near its value, a prismatic one over its range. A gun's jaw swept under
+  // a wrist a degree off (a jacketed forearm pulls the joint ICP) lands in
+  // a wrong basin that its ICP does not leave. *reswept: some joint was.
+  Status ResweepMoved(const Pose& T_world_base, const std::vector<double>& swept,
+                      std::vector<JointRecord>* records, std::vector<double>* q, bool* reswept);
   // A joint whose sweep found a runner-up nearly as good (a wrist turned
   // half a turn, a bare flange) is fitted again from the runner-up, with
   // every joint below it fitted anew (a wrist flip changes them too), and
