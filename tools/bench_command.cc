@@ -344,7 +344,7 @@ Command BenchCommand() {
       "Run from the source folder (the defaults name assets/...). "
       "benchmarks/plot_ablation.py draws error against w_high or lambda from --out_json.",
       {"assets",         "robot_urdf",    "robot_attach",
-       "robot_postures", "conveyor_urdf", "conveyor_postures",
+       "robot_postures", "random_postures", "conveyor_urdf", "conveyor_postures",
        "scenes",         "weightings",    "only",
        "base_range_m",   "w_highs",       "lambdas",
        "losses",         "loss_scale_mm", "sweep_steps_deg",
@@ -354,7 +354,8 @@ Command BenchCommand() {
        "noise_mm",       "scanners",      "seed",
        "w_high",         "lambda",        "loss",
        "refine_chain",   "threads",       "sensors",
-       "align_stations", "covering_rounds",
+       "align_stations", "covering_rounds", "remove_mixed_pixels",
+       "mixed_pixel_tolerance_mm",
        "beam",           "jackets"},
       RunBench};
 }

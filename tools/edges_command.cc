@@ -3,6 +3,7 @@
 // PLY coloured by weight for CloudCompare or MeshLab.
 //   edgefit edges --scan=F[,F...] [--w_high=10 ...] --out_weights=F.bin
 //                 --out_json=F.json [--out_ply=F.ply] [--labels=L.bin]
+//                 [--remove_mixed_pixels]
 #include <omp.h>
 
 #include <chrono>
@@ -12,9 +13,12 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
+#include "fit_flags.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/io/scan_io.h"
+#include "edgefit/scan/mixed_pixels.h"
+#include "edgefit/scene/scene.h"
 #include "edgefit/scanner/edge_metrics.h"
 #include "edgefit/scanner/label_file.h"
 
@@ -124,6 +128,25 @@ int RunEdges(const Command& command) {
   }
   const double load_seconds = SecondsSince(start);
 
+  // Mixed pixels: found (and removed with --remove_mixed_pixels), and
+  // scored against the labels' mixed-pixel flag.
+  MixedPixelOptions mixed_options;
+  mixed_options.tolerance = 1e-3 * FLAGS_mixed_pixel_tolerance_mm;
+  std::string error;
+  if (!mixed_options.IsValid(&error)) return BadInput(command, error);
+  size_t mixed_found = 0, mixed_labelled = 0, mixed_right = 0;
+  for (size_t s = 0; s < set.scans.size(); ++s) {
+    const std::vector<uint8_t> mixed = FindMixedPixels(set.scans[s], mixed_options);
+    for (size_t i = 0; i < mixed.size(); ++i) {
+      const bool labelled = !FLAGS_labels.empty() && set.scans[s].IsValid(i) &&
+                            (labels.labels[s][set.scans[s].FileIndex(i)] & kMixedPixelFlag) != 0;
+      mixed_found += mixed[i];
+      mixed_labelled += labelled;
+      mixed_right += mixed[i] && labelled;
+      if (mixed[i] && FLAGS_remove_mixed_pixels) set.scans[s].SetMissing(i);
+    }
+  }
+
   Progress("edges: " + std::to_string(set.TotalValid()) + " points in " +
            std::to_string(set.scans.size()) + " scans");
   EdgeDetectionResult result;
@@ -162,6 +185,13 @@ int RunEdges(const Command& command) {
         {"tau_region", options.tau_region}, {"tau_min", options.tau_min},
         {"w_high", options.w_high}}},
       {"threads", omp_get_max_threads()}};
+  json["mixed_pixels"] = {{"found", mixed_found}, {"removed", FLAGS_remove_mixed_pixels}};
+  auto ratio = [](size_t a, size_t b) { return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b); };
+  if (!FLAGS_labels.empty()) {
+    json["mixed_pixels"]["labelled"] = mixed_labelled;
+    json["mixed_pixels"]["precision"] = ratio(mixed_right, mixed_found);
+    json["mixed_pixels"]["recall"] = ratio(mixed_right, mixed_labelled);
+  }
   EdgeMetrics metrics;
   if (!FLAGS_labels.empty()) {
     metrics = EvaluateEdgeWeights(labels.labels, weights);
@@ -197,6 +227,13 @@ int RunEdges(const Command& command) {
               result.points, result.candidates, result.edge_points, result.regions,
               result.timings.total, result.timings.normals, result.timings.scores,
               result.timings.region_growing, json["timing_s"]["total"].get<double>());
+  std::printf("mixed pixels: %zu found%s", mixed_found,
+              FLAGS_remove_mixed_pixels ? " and removed before the edges" : "");
+  if (!FLAGS_labels.empty()) {
+    std::printf("; against the labels (%zu flagged): precision %.3f, recall %.3f", mixed_labelled,
+                ratio(mixed_right, mixed_found), ratio(mixed_right, mixed_labelled));
+  }
+  std::printf("\n");
   if (!FLAGS_labels.empty()) std::printf("against %s: %s\n", FLAGS_labels.c_str(),
                                          metrics.BriefReport().c_str());
   return kExitOk;
@@ -216,7 +253,7 @@ Command EdgesCommand() {
           "    --out_json=edges.json --out_ply=edges.ply",
           {"scan", "out_weights", "out_json", "out_ply", "labels", "w_high", "normal_radius_mm",
            "tau_align", "r_min_mm", "r_max_mm", "tau_dot", "region_radius_mm", "tau_region",
-           "tau_min", "threads"},
+           "tau_min", "remove_mixed_pixels", "mixed_pixel_tolerance_mm", "threads"},
           &RunEdges};
 }
 

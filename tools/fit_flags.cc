@@ -20,11 +20,16 @@ DEFINE_bool(refine_chain, true,
             "After the sequential fit, refine the base pose and every joint together in one "
             "Ceres problem (solvers/refinement/); --norefine_chain: the sequential fit alone.");
 DEFINE_bool(align_stations, true,
-            "Align the scan's stations to each other before the fit (their registration "
-            "residuals); --noalign_stations: use the written station poses.");
+            "Register each station to the fitted model and fit again when one moved (their "
+            "registration residuals); --noalign_stations: use the written station poses.");
 DEFINE_int32(covering_rounds, 2,
              "Rounds of the whole-chain refinement without the coverings found at the last "
              "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
+DEFINE_bool(remove_mixed_pixels, false,
+            "Remove mixed pixels (a range between a foreground edge and the surface behind it) "
+            "from the scans before the edges and the fit.");
+DEFINE_double(mixed_pixel_tolerance_mm, 5.0,
+              "A mixed pixel lies this far off the surfaces on both sides of it [mm].");
 DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
@@ -47,6 +52,8 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->refinement.chain.refine = FLAGS_refine_chain;
   options->stations.align = FLAGS_align_stations;
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
+  options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
+  options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
   if (!FLAGS_init.empty()) {
     double x = 0.0, y = 0.0, yaw = 0.0;
     EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));

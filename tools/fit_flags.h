@@ -19,6 +19,8 @@ DECLARE_string(parameterization);
 DECLARE_bool(refine_chain);
 DECLARE_bool(align_stations);
 DECLARE_int32(covering_rounds);
+DECLARE_bool(remove_mixed_pixels);
+DECLARE_double(mixed_pixel_tolerance_mm);
 DECLARE_string(init);
 
 namespace edgefit::tools {

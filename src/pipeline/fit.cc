@@ -54,14 +54,21 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   cad.sweep = SampleModelSurfaces(model, sampling);
   cad.chain = ChainSamples(model, cad, options, &cad.chain_point_to_point);
 
-  // Sec. 4: edge weights and normals.
+  // Extension: mixed pixels off the scans.
   auto stage = std::chrono::steady_clock::now();
-  say("edges: detecting on " + std::to_string(written_scans.TotalValid()) + " points");
+  ScanSet without_mixed;
+  if (options.remove_mixed_pixels) {
+    without_mixed = WithoutMixedPixels(written_scans, options.mixed_pixels, &result->mixed_pixels);
+    say("mixed pixels: " + std::to_string(result->mixed_pixels) + " removed");
+  }
+  const ScanSet& scans = options.remove_mixed_pixels ? without_mixed : written_scans;
+
+  // Sec. 4: edge weights and normals.
+  say("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
   EdgeDetectionResult edges;
-  EDGEFIT_RETURN_IF_ERROR(DetectEdges(written_scans, options.edges, &edges));
+  EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
   result->timings.edges = Since(stage);
 
-  const ScanSet& scans = written_scans;
   const CellWeights* weights = options.uniform_weights ? nullptr : &edges.w_edge;
   CorrespondenceSearch search(&scans, weights);
   const ScanVisibility visibility(&scans);

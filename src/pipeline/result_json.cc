@@ -109,6 +109,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"base_precise", fit.timings.base_precise},
             {"chain", fit.timings.chain},
             {"refine", fit.timings.refine}}},
+          {"mixed_pixels_removed", fit.mixed_pixels},
           {"coverings",
            {{"matched", coverings.matched},
             {"covered", coverings.covered},

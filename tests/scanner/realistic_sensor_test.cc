@@ -6,6 +6,7 @@
 
 #include "edgefit/model/composition.h"
 #include "edgefit/model/primitive_meshes.h"
+#include "edgefit/scan/mixed_pixels.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/beam_footprint.h"
 #include "edgefit/scanner/range_noise.h"
@@ -98,6 +99,62 @@ TEST(BeamFootprintTest, GrazingPlaneIsNotMixed) {
   }
   EXPECT_GT(valid, 1000u);
   EXPECT_EQ(mixed, 0u);
+}
+
+// Mixed-pixel removal (scan/mixed_pixels.h) on the plate before the wall,
+// with 1 mm range noise: it finds most labelled mixed pixels and little else.
+TEST(MixedPixelRemovalTest, FindsTheLabelledMixedPixelsOfAnEdge) {
+  Scene scene;
+  scene.meshes.push_back(Box({Eigen::Vector3d(4.0, -0.1, 1.4), Eigen::Vector3d(4.02, 0.1, 1.6)},
+                             LinkLabel(0)));
+  scene.meshes.push_back(
+      Box({Eigen::Vector3d(4.5, -3, -1), Eigen::Vector3d(4.6, 3, 4)}, kLabelBackground));
+  VirtualScanOptions options = FootprintOptions();
+  options.noise_sigma = 0.001;
+  options.asset_box_world = Eigen::AlignedBox3d(Eigen::Vector3d(4.0, -0.15, 1.35),
+                                                Eigen::Vector3d(4.02, 0.15, 1.65));
+  VirtualScan scan;
+  ASSERT_TRUE(ScanScene(scene, {ScannerAt(0, 0, 1.5)}, options, &scan).ok());
+  const OrganizedScan& s = scan.scans.scans[0];
+  const std::vector<uint8_t> found = FindMixedPixels(s, MixedPixelOptions());
+  size_t labelled = 0, flagged = 0, right = 0, far_off = 0, far_off_found = 0;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (!s.IsValid(i)) continue;
+    const bool label = (scan.labels[0][i] & kMixedPixelFlag) != 0;
+    labelled += label;
+    flagged += found[i];
+    right += label && found[i];
+    // Off both surfaces by more than 2 cm: unmistakable.
+    const double x = s.PointWorld(i).x();
+    if (label && x > 4.02 + 0.02 && x < 4.5 - 0.02) {
+      ++far_off;
+      far_off_found += found[i];
+    }
+  }
+  ASSERT_GT(labelled, 300u);
+  EXPECT_GE(static_cast<double>(right), 0.9 * static_cast<double>(flagged)) << "precision";
+  EXPECT_GE(static_cast<double>(right), 0.5 * static_cast<double>(labelled)) << "recall";
+  EXPECT_GE(static_cast<double>(far_off_found), 0.9 * static_cast<double>(far_off))
+      << "the mixed pixels far off both surfaces";
+}
+
+// A floor at about 80 degrees incidence, 1 mm range noise: one surface.
+TEST(MixedPixelRemovalTest, KeepsANoisyGrazingPlane) {
+  Scene scene;
+  scene.meshes.push_back(testing_util::FloorMesh(30.0));
+  VirtualScanOptions options = FootprintOptions();
+  options.noise_sigma = 0.001;
+  options.asset_box_world =
+      Eigen::AlignedBox3d(Eigen::Vector3d(8.0, -0.3, 0.0), Eigen::Vector3d(9.0, 0.3, 0.01));
+  options.window_margin_deg = 0.5;
+  VirtualScan scan;
+  ASSERT_TRUE(ScanScene(scene, {ScannerAt(0, 0, 1.5)}, options, &scan).ok());
+  const OrganizedScan& s = scan.scans.scans[0];
+  const std::vector<uint8_t> found = FindMixedPixels(s, MixedPixelOptions());
+  size_t flagged = 0;
+  for (const uint8_t f : found) flagged += f;
+  EXPECT_GT(s.CountValid(), 1000u);
+  EXPECT_LE(flagged, s.CountValid() / 1000) << flagged << " cells of a plane taken for mixed pixels";
 }
 
 TEST(BeamFootprintTest, PresetsAndRadius) {

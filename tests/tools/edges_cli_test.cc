@@ -49,6 +49,10 @@ TEST_F(CliTest, EdgesWritesWeightsJsonAndPly) {
   EXPECT_GT(e["metrics"]["true_edges"].get<size_t>(), 0u);
   EXPECT_GT(e["metrics"]["precision"].get<double>(), 0.0);
   EXPECT_GT(fs::file_size(Path("e.ply")), 1000u);
+  // The ideal scanner makes no mixed pixels; the detector finds almost none.
+  EXPECT_EQ(e["mixed_pixels"]["labelled"].get<size_t>(), 0u);
+  EXPECT_LE(e["mixed_pixels"]["found"].get<size_t>(), valid / 1000);
+  EXPECT_FALSE(e["mixed_pixels"]["removed"].get<bool>());
 }
 
 TEST_F(CliTest, EdgesBadInput) {

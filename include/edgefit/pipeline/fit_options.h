@@ -11,6 +11,7 @@
 
 #include "edgefit/core/pose.h"
 #include "edgefit/edges/edge_detector.h"
+#include "edgefit/scan/mixed_pixels.h"
 #include "solvers/base/base_hypotheses.h"
 #include "solvers/base/base_rough.h"
 #include "solvers/base/conveyance_base_rough.h"
@@ -76,6 +77,10 @@ struct FitOptions {
   // Uniform weights (w_edge = 1) in every stage instead of Eq. (6)'s:
   // the correspondence search is then given no weights.
   bool uniform_weights = false;
+  // Extension: mixed pixels (scan/mixed_pixels.h) removed from the scans
+  // before Sec. 4, so that neither the edges nor any stage sees them.
+  bool remove_mixed_pixels = false;
+  MixedPixelOptions mixed_pixels;
   // Sec. 4: edges and their weights (w_high lives here).
   EdgeDetectionOptions edges;
   // Extension: the stations aligned to each other before the fit, against

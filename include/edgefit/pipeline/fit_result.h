@@ -56,6 +56,8 @@ struct FitResult {
   ChainRefinementSummary chain_refinement;
   // The coverings left out of the refinement's last round.
   CoveringSummary coverings;
+  // Cells removed as mixed pixels before Sec. 4 (FitOptions::remove_mixed_pixels).
+  size_t mixed_pixels = 0;
   FitTimings timings;
   bool ok = false;
   std::string message;  // why not ok

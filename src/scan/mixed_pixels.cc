@@ -1,0 +1,67 @@
+#include "edgefit/scan/mixed_pixels.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace edgefit {
+
+bool MixedPixelOptions::IsValid(std::string* error) const {
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance) || min_lines < 1 || min_lines > 4) {
+    if (error != nullptr) *error = "mixed pixels: tolerance must be > 0 and min_lines in 1..4";
+    return false;
+  }
+  return true;
+}
+
+std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixelOptions& options) {
+  std::vector<uint8_t> mixed(scan.size(), 0);
+  if (!scan.organized()) return mixed;
+  const int rows = scan.rows(), cols = scan.cols();
+  // Range of a cell, NaN when missing or off the grid.
+  auto range = [&](int row, int col) -> double {
+    if (row < 0 || row >= rows || col < 0 || col >= cols) return std::nan("");
+    const size_t i = scan.Index(row, col);
+    return scan.IsValid(i) ? static_cast<double>(scan.point_scanner(i).norm()) : std::nan("");
+  };
+  const double tol = options.tolerance;
+  // Row, column and the two diagonals.
+  constexpr int kLines[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
+#pragma omp parallel for schedule(static)
+  for (int col = 0; col < cols; ++col) {
+    for (int row = 0; row < rows; ++row) {
+      const double r = range(row, col);
+      if (std::isnan(r)) continue;
+      int lines = 0;
+      for (const auto& line : kLines) {
+        const int dr = line[0], dc = line[1];
+        const double a1 = range(row - dr, col - dc), b1 = range(row + dr, col + dc);
+        if (std::isnan(a1) || std::isnan(b1)) continue;
+        if (!(r > std::min(a1, b1) + tol && r < std::max(a1, b1) - tol)) continue;
+        const double a2 = range(row - 2 * dr, col - 2 * dc);
+        const double b2 = range(row + 2 * dr, col + 2 * dc);
+        const double from_a = std::isnan(a2) ? a1 : 2.0 * a1 - a2;
+        const double from_b = std::isnan(b2) ? b1 : 2.0 * b1 - b2;
+        lines += std::abs(r - from_a) > tol && std::abs(r - from_b) > tol;
+      }
+      if (lines >= options.min_lines) mixed[scan.Index(row, col)] = 1;
+    }
+  }
+  return mixed;
+}
+
+ScanSet WithoutMixedPixels(const ScanSet& scans, const MixedPixelOptions& options,
+                           size_t* removed) {
+  ScanSet out = scans;
+  *removed = 0;
+  for (OrganizedScan& scan : out.scans) {
+    const std::vector<uint8_t> mixed = FindMixedPixels(scan, options);
+    for (size_t i = 0; i < mixed.size(); ++i) {
+      if (mixed[i] == 0) continue;
+      scan.SetMissing(i);
+      ++*removed;
+    }
+  }
+  return out;
+}
+
+}  // namespace edgefit
