@@ -6,8 +6,10 @@
 namespace edgefit {
 
 bool MixedPixelOptions::IsValid(std::string* error) const {
-  if (!(tolerance > 0.0) || !std::isfinite(tolerance) || min_lines < 1 || min_lines > 4) {
-    if (error != nullptr) *error = "mixed pixels: tolerance must be > 0 and min_lines in 1..4";
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance) || min_lines < 1 || min_lines > 4 || !(tolerance_per_spacing >= 0.0)) {
+    if (error != nullptr) {
+      *error = "mixed pixels: tolerance must be > 0, tolerance_per_spacing >= 0, min_lines in 1..4";
+    }
     return false;
   }
   return true;
@@ -23,7 +25,10 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
     const size_t i = scan.Index(row, col);
     return scan.IsValid(i) ? static_cast<double>(scan.point_scanner(i).norm()) : std::nan("");
   };
-  const double tol = options.tolerance;
+  // The cell's spacing is range * step (0 without a lattice).
+  const double step = std::max(std::abs(scan.lattice().elevation_step()),
+                               std::abs(scan.lattice().azimuth_step()));
+
   // Row, column and the two diagonals.
   constexpr int kLines[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
 #pragma omp parallel for schedule(static)
@@ -31,6 +36,7 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
     for (int row = 0; row < rows; ++row) {
       const double r = range(row, col);
       if (std::isnan(r)) continue;
+      const double tol = std::max(options.tolerance, options.tolerance_per_spacing * r * step);
       int lines = 0;
       for (const auto& line : kLines) {
         const int dr = line[0], dc = line[1];

@@ -7,9 +7,9 @@
 // four lines of its scan's grid through it (row, column, two diagonals),
 // with neighbours a1, a2 on one side and b1, b2 on the other (a2, b2 two
 // cells away):
-//   - its range lies between r(a1) and r(b1), more than `tolerance` from
+//   - its range lies between r(a1) and r(b1), more than the tolerance from
 //     each (a depth step across it), and
-//   - it lies more than `tolerance` off the surface of either side,
+//   - it lies more than the tolerance off the surface of either side,
 //     extrapolated linearly along the line (2 r(a1) - r(a2); r(a1) alone
 //     when a2 is missing).
 // A plane seen at a grazing angle is linear along every line, so its cells
@@ -36,6 +36,12 @@ struct MixedPixelOptions {
   // a linear extrapolation from two noisy ranges has about 2.4 sigma of
   // noise, so a cell on a surface is within 2 of its sigmas.
   double tolerance = 0.005;
+  // ... or this many times the cell's spacing (range times the lattice's
+  // step), when larger: on a curved surface a linear extrapolation misses
+  // by more the coarser the grid. On an ideal scan of the demo robot at
+  // 6 mm, 1.9 % of the cells were taken for mixed pixels with the fixed
+  // tolerance alone, 0.23 % with 1.5 spacings (1.7 mm: 0.05 % either way).
+  double tolerance_per_spacing = 1.5;
   // Lines (of 4) along which the cell must be mixed. On the raised bench
   // scene at 1.7 mm (edgefit edges --labels): 1 line found 66 % of the
   // labelled mixed pixels at precision 0.67 (mixed pixels alone) and 0.11
