@@ -76,6 +76,8 @@ DEFINE_string(scanner_counts, "", "Bench ablation: scanner counts (default: --sc
 DEFINE_int32(repeats, 1,
              "Bench: each scene with seeds seed .. seed+repeats-1 (other base poses, scans and "
              "fit seeds).");
+DEFINE_bool(fit_progress, false,
+            "Bench: pass each fit's progress lines on (stderr, as edgefit fit prints them).");
 DEFINE_string(out_csv, "", "Bench: optional CSV, one line per fitted joint.");
 
 namespace edgefit::tools {
@@ -265,7 +267,8 @@ int RunBench(const Command& command) {
                 FitOptions options;
                 EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFor(kind, fit, seed, &options));
                 EDGEFIT_RETURN_IF_ERROR_EXIT(
-                    command, FitBenchCase(model, c, scan.scans, options, &run.result));
+                    command, FitBenchCase(model, c, scan.scans, options, &run.result,
+                                          FLAGS_fit_progress ? ProgressFn(Progress) : nullptr));
                 runs.push_back(std::move(run));
               }
             }
@@ -344,7 +347,7 @@ Command BenchCommand() {
       "Run from the source folder (the defaults name assets/...). "
       "benchmarks/plot_ablation.py draws error against w_high or lambda from --out_json.",
       {"assets",         "robot_urdf",    "robot_attach",
-       "robot_postures", "random_postures", "conveyor_urdf", "conveyor_postures",
+       "robot_postures", "random_postures", "fit_progress", "conveyor_urdf", "conveyor_postures",
        "scenes",         "weightings",    "only",
        "base_range_m",   "w_highs",       "lambdas",
        "losses",         "loss_scale_mm", "sweep_steps_deg",

@@ -206,6 +206,74 @@ Status ChainFitter::RefineSubtrees(const Pose& T_world_base, size_t first, int o
   return Status::Ok();
 }
 
+void ChainFitter::AddChildren(int joint, const std::vector<Pose>& T_world_link, SurfaceSamples* icp,
+                              SurfaceSamples* sweep) const {
+  const Joint& j = model_.joints()[static_cast<size_t>(joint)];
+  const Body body = MakeBody(model_, j.child_link, joint);
+  for (const int link : body.links) {
+    for (const int child_joint : model_.links()[static_cast<size_t>(link)].child_joints) {
+      const Joint& c = model_.joints()[static_cast<size_t>(child_joint)];
+      if (c.type == JointType::kFixed) continue;
+      const Body child = MakeBody(model_, c.child_link, child_joint);
+      const Pose T_body_child = T_world_link[static_cast<size_t>(j.child_link)].inverse() *
+                                T_world_link[static_cast<size_t>(c.child_link)];
+      SurfaceSamples child_sweep, child_icp;
+      AppendBodySamples(child, sweep_samples_, Pose::Identity(), &child_sweep);
+      AppendBodySamples(child, icp_samples_, Pose::Identity(), &child_icp);
+      if (c.type != JointType::kPrismatic) {
+        SurfaceSamples round_sweep = RoundPart(child_sweep, c.axis);
+        if (static_cast<double>(round_sweep.size()) >=
+            options_.min_round_child_share * static_cast<double>(child_sweep.size())) {
+          child_sweep = std::move(round_sweep);
+          child_icp = RoundPart(child_icp, c.axis);
+        }
+      }
+      AppendPosedSamples(child_sweep, T_body_child, sweep);
+      AppendPosedSamples(child_icp, T_body_child, icp);
+    }
+  }
+}
+
+Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, const std::vector<double>& q,
+                                     std::vector<JointRecord>* records) const {
+  const std::vector<Pose> T_world_link = model_.ForwardKinematics(q, T_world_base);
+  for (JointRecord& record : *records) {
+    const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+    const size_t jj = static_cast<size_t>(record.joint);
+    const LinkMotion motion =
+        LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
+    const Body body = MakeBody(model_, j.child_link, record.joint);
+    SurfaceSamples body_icp, body_sweep;
+    AppendBodySamples(body, sweep_samples_, Pose::Identity(), &body_sweep);
+    if (record.symmetric) AddChildren(record.joint, T_world_link, &body_icp, &body_sweep);
+    ThinSamples(samples_.max_sweep_samples, &body_sweep);
+    if (body_sweep.points.empty()) continue;
+    JointSweepSummary best;
+    EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, motion, options_.sweep, &best));
+    const bool prismatic = j.type == JointType::kPrismatic;
+    const double separation = prismatic ? std::abs(best.q - q[jj])
+                                        : std::abs(std::remainder(best.q - q[jj], 2.0 * M_PI));
+    if (separation < (prismatic ? options_.sweep.distinct_prismatic
+                                : options_.sweep.distinct_revolute)) {
+      continue;
+    }
+    const double better = (sweep_->Loss(body_sweep, motion, q[jj], options_.sweep) - best.loss) /
+                          static_cast<double>(body_sweep.points.size());
+    if (!(better > options_.ambiguity_mean_loss)) continue;
+    record.ambiguous = true;
+    record.better_elsewhere = true;
+    record.alternative = best.q;
+    record.margin = better;
+    char line[320];
+    std::snprintf(line, sizeof(line),
+                  "final basins: %s = %.5f, but swept at the final values of the others %.5f fits "
+                  "%.3f mm/sample better: NOT OK",
+                  j.name.c_str(), q[jj], best.q, 1e3 * better);
+    say_(line);
+  }
+  return Status::Ok();
+}
+
 Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, JointRecord* record,
                              bool resweep) {
   const Joint& j = model_.joints()[static_cast<size_t>(record->joint)];
@@ -227,34 +295,7 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
         body_icp.points.empty() ||
         (revolute && IsRotationallySymmetric(body_icp, j.axis, options_.symmetric_share));
   }
-  // A revolute child adds only its round part about its own axis when it
-  // has one (a flange): that part is where it is whatever the child's
-  // value, while the rest, at a value not fitted yet, could pull this
-  // joint into a wrong basin it would not leave (a wrist under a gun).
-  auto add_children = [&] {
-    for (const int link : body.links) {
-      for (const int child_joint : model_.links()[static_cast<size_t>(link)].child_joints) {
-        const Joint& c = model_.joints()[static_cast<size_t>(child_joint)];
-        if (c.type == JointType::kFixed) continue;
-        const Body child = MakeBody(model_, c.child_link, child_joint);
-        const Pose T_body_child = T_world_link[static_cast<size_t>(j.child_link)].inverse() *
-                                  T_world_link[static_cast<size_t>(c.child_link)];
-        SurfaceSamples child_sweep, child_icp;
-        AppendBodySamples(child, sweep_samples_, Pose::Identity(), &child_sweep);
-        AppendBodySamples(child, icp_samples_, Pose::Identity(), &child_icp);
-        if (c.type != JointType::kPrismatic) {
-          SurfaceSamples round_sweep = RoundPart(child_sweep, c.axis);
-          if (static_cast<double>(round_sweep.size()) >=
-              options_.min_round_child_share * static_cast<double>(child_sweep.size())) {
-            child_sweep = std::move(round_sweep);
-            child_icp = RoundPart(child_icp, c.axis);
-          }
-        }
-        AppendPosedSamples(child_sweep, T_body_child, &body_sweep);
-        AppendPosedSamples(child_icp, T_body_child, &body_icp);
-      }
-    }
-  };
+  auto add_children = [&] { AddChildren(record->joint, T_world_link, &body_icp, &body_sweep); };
   if (record->symmetric) add_children();
   ThinSamples(samples_.max_icp_samples, &body_icp);
   ThinSamples(samples_.max_sweep_samples, &body_sweep);

@@ -111,6 +111,8 @@ struct JointRecord {
   int icp_iterations = 0;
   // ChainFitter::CheckAlternatives and CheckPinning (ChainOptions::ambiguity_*).
   bool ambiguous = false;
+  // CheckFinalBasins: another value fits better than the final one.
+  bool better_elsewhere = false;
   double alternative = 0.0;
   double margin = std::numeric_limits<double>::infinity();
 };
@@ -133,6 +135,18 @@ class ChainFitter {
   // whole model.
   Status Fit(const Pose& T_world_base, std::vector<double>* q, std::vector<JointRecord>* records,
              double* loss);
+
+  // Extension, after the whole-chain refinement: each joint's body (with
+  // its children when symmetric) is swept over the joint's range at the
+  // final values of every other joint. When the sweep's best lies in
+  // another basin (JointSweepOptions::distinct_*) and beats the final value
+  // by more than ambiguity_mean_loss per sample, the fit is in a wrong
+  // basin: the record is marked ambiguous and better_elsewhere, with that
+  // value as its alternative. The sequential fit chose each basin with the
+  // joints above it not yet final (a gun's jaw swept under a wrist a degree
+  // off); the final values are the best context there is.
+  Status CheckFinalBasins(const Pose& T_world_base, const std::vector<double>& q,
+                          std::vector<JointRecord>* records) const;
 
   // The Eq. (9) loss of every link at or below `link` at joint values q;
   // *samples counts the sweep samples scored.
@@ -185,6 +199,13 @@ class ChainFitter {
   // value as its alternative (a round link that nothing below it tells).
   void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
                     const std::vector<double>& q) const;
+  // Adds the children of `joint`'s body at their values in T_world_link,
+  // in the body's frame: a revolute child only its round part about its
+  // own axis when it has one (a flange: it is where it is whatever the
+  // child's value, while the rest, at a value not fitted yet, could pull
+  // the joint into a wrong basin it would not leave; a wrist under a gun).
+  void AddChildren(int joint, const std::vector<Pose>& T_world_link, SurfaceSamples* icp,
+                   SurfaceSamples* sweep) const;
   // The links with in[l] that q and q_other place apart (see
   // ChainOptions::alike_share): the ones a comparison of the two should
   // score.

@@ -148,7 +148,15 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   const bool stations_moved = moved > options.stations.refit_correction;
   const bool covered_link = CoveringsHideALink(result->coverings, options.refinement.coverings);
   if (!stations_moved && !covered_link) {
-    // The verdict of every body alone at the final values.
+    // Every joint's basin at the final values, then the verdict of every
+    // body alone there.
+    const ScanVisibility final_visibility(&final_scans);
+    const JointSweep final_sweep(&final_search.lattice(), &final_visibility);
+    const ChainFitter final_chain(model, options.chain, options.samples, cad.icp, cad.sweep,
+                                  &final_icp, &final_sweep, say);
+    EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, final_chain, final_scans, &final_search,
+                                                 weights, cad, options, say, result,
+                                                 &best.records, &covered));
     EDGEFIT_RETURN_IF_ERROR(
         JudgeQuality(model, &final_icp, cad, best.records, resolved, options, result));
     result->timings.total = Since(start);
@@ -185,6 +193,9 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, clean_scans, &clean_search, weights, cad,
                                            options, say, result, &covered));
   result->coverings = first_coverings;  // the cells left out of the second pass
+  EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, clean_chain, clean_scans, &clean_search,
+                                               weights, cad, options, say, result, &refit.records,
+                                               &covered));
   EDGEFIT_RETURN_IF_ERROR(
       JudgeQuality(model, &clean_icp, cad, refit.records, resolved, options, result));
   if (covered_link) MarkBasinChanges(model, q_with_coverings, options, result);

@@ -37,6 +37,7 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     quality.symmetric = record.symmetric;
     quality.sweep_value = record.sweep.q;
     quality.ambiguous = record.ambiguous;
+    quality.better_elsewhere = record.better_elsewhere;
     quality.alternative_value = record.alternative;
     quality.ambiguity_margin = record.margin;
     quality.ok = quality.ok && !quality.ambiguous;
@@ -49,7 +50,15 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     if (b.ok || !result->ok) continue;
     result->ok = false;
     char line[512];
-    if (b.ambiguous) {
+    if (b.better_elsewhere) {
+      std::snprintf(line, sizeof(line),
+                    "%s is in a wrong basin: at the final values of the other joints, %s = %.4f "
+                    "fits the scan better than the reported %.4f (Eq. 9 loss %.3f mm lower per "
+                    "sample)",
+                    b.link.c_str(), b.joint.c_str(), b.alternative_value,
+                    result->q[static_cast<size_t>(model.JointIndex(b.joint))],
+                    1e3 * b.ambiguity_margin);
+    } else if (b.ambiguous) {
       std::snprintf(line, sizeof(line),
                     "%s is ambiguous: %s = %.4f and %.4f fit the scan about equally well (Eq. 9 "
                     "loss %.3f mm apart per sample); an attached end effector or more scan "

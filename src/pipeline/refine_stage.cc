@@ -82,4 +82,35 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   return Status::Ok();
 }
 
+Status RefineIntoBestBasins(const KinematicModel& model, const ChainFitter& chain,
+                            const ScanSet& scans, CorrespondenceSearch* search,
+                            const CellWeights* weights, const CadSamples& cad,
+                            const FitOptions& options, const ProgressFn& say, FitResult* result,
+                            std::vector<JointRecord>* records, CellMask* covered) {
+  const auto start = std::chrono::steady_clock::now();
+  const double refine_before = result->timings.refine;  // this stage's time is added to it
+  const std::vector<JointRecord> before = *records;
+  EDGEFIT_RETURN_IF_ERROR(chain.CheckFinalBasins(result->T_world_base, result->q, records));
+  bool moved = false;
+  for (const JointRecord& record : *records) {
+    if (!record.better_elsewhere) continue;
+    result->q[static_cast<size_t>(record.joint)] = record.alternative;
+    moved = true;
+  }
+  if (!moved) {
+    result->timings.refine = refine_before + Since(start);
+    return Status::Ok();
+  }
+  say("chain: refining again from the better values");
+  (void)model.ResolveDependentJoints(&result->q);
+  const CoveringSummary coverings = result->coverings;
+  EDGEFIT_RETURN_IF_ERROR(
+      RefineWholeChain(model, scans, search, weights, cad, options, say, result, covered));
+  result->coverings = coverings;  // the verdict's: the cells left out of the first refinement
+  *records = before;
+  EDGEFIT_RETURN_IF_ERROR(chain.CheckFinalBasins(result->T_world_base, result->q, records));
+  result->timings.refine = refine_before + Since(start);
+  return Status::Ok();
+}
+
 }  // namespace edgefit

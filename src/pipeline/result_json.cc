@@ -44,6 +44,7 @@ json PerLinkJson(const FitResult& fit) {
                         {"ok", b.ok}};
     if (!b.joint.empty()) per_link[b.link]["sweep_value"] = b.sweep_value;
     per_link[b.link]["ambiguous"] = b.ambiguous;
+    per_link[b.link]["better_elsewhere"] = b.better_elsewhere;
     if (std::isfinite(b.ambiguity_margin)) {  // an alternative value was fitted and compared
       per_link[b.link]["alternative_value"] = b.alternative_value;
       per_link[b.link]["alternative_margin_m"] = b.ambiguity_margin;

@@ -63,6 +63,17 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
                         FitResult* result, CellMask* covered);
 
+// Extension: every joint's basin checked at the final values
+// (ChainFitter::CheckFinalBasins, with `chain` on the same scans as
+// `search`); the joints with a better value elsewhere take it and the
+// whole chain is refined again from there (RefineWholeChain), then checked
+// once more: a joint still better elsewhere stays marked in *records.
+Status RefineIntoBestBasins(const KinematicModel& model, const ChainFitter& chain,
+                            const ScanSet& scans, CorrespondenceSearch* search,
+                            const CellWeights* weights, const CadSamples& cad,
+                            const FitOptions& options, const ProgressFn& say, FitResult* result,
+                            std::vector<JointRecord>* records, CellMask* covered);
+
 // The verdict of every jointed body alone at the final values (the base's
 // is in result->bodies already), appended to result->bodies; result->ok
 // and result->message from them and from `resolved` (the dependent joints).

@@ -29,6 +29,9 @@ struct BodyQuality {
   // The other joint value the ambiguity checks fitted (ambiguity_margin:
   // their loss difference per sample [m]; infinity when not checked).
   bool ambiguous = false;
+  // ChainFitter::CheckFinalBasins: the alternative fits better than the
+  // reported value (a wrong basin), not about as well.
+  bool better_elsewhere = false;
   double alternative_value = 0.0;
   double ambiguity_margin = std::numeric_limits<double>::infinity();
   bool ok = false;
