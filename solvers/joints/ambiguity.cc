@@ -1,7 +1,7 @@
 // ChainFitter's ambiguity checks (extensions of Sec. 5.2): a joint whose
 // sweep found a near-equal runner-up is fitted from there too, and the
-// lower Eq. (9) loss of its subtree wins; a revolute joint the scan does not
-// pin down is flagged.
+// lower Eq. (9) loss of the bodies the two values place apart wins; a
+// revolute joint the scan does not pin down is flagged.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -61,8 +61,8 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     const double distinct = j.type == JointType::kPrismatic ? options_.sweep.distinct_prismatic
                                                             : options_.sweep.distinct_revolute;
     if (separation < 0.5 * distinct) continue;  // back in the same basin: no alternative
-    size_t samples = 0, placed_apart_samples = 0;
-    (void)SubtreeLoss(T_world_base, *q, j.child_link, &samples);
+    size_t samples = 0, placed_apart_samples = 0;  // the subtree's, the scored bodies'
+    for (size_t l = 0; l < below.size(); ++l) samples += below[l] ? sweep_samples_[l].size() : 0;
     const std::vector<bool> apart = PlacedApart(T_world_base, *q, q_other, below);
     const double loss = LinksLoss(T_world_base, *q, apart, &placed_apart_samples);
     const double other_loss = LinksLoss(T_world_base, q_other, apart, &placed_apart_samples);

@@ -39,6 +39,9 @@ bool ChainOptions::IsValid(std::string* error) const {
     return fail("pinning_revolute must be > 0 and pinning_mean_loss >= 0");
   }
   if (!(alike_share >= 0.0 && alike_share <= 1.0)) return fail("alike_share must be in [0, 1]");
+  if (!(final_basin_revolute > 0.0) || !(final_basin_prismatic > 0.0)) {
+    return fail("final_basin_revolute and final_basin_prismatic must be > 0");
+  }
   if (max_passes_after_switch < 0 || !(settle_tolerance_rad > 0.0) || !(settle_tolerance_m > 0.0)) {
     return fail("max_passes_after_switch must be >= 0 and the settle tolerances > 0");
   }
@@ -253,8 +256,7 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, const std::vector
     const bool prismatic = j.type == JointType::kPrismatic;
     const double separation = prismatic ? std::abs(best.q - q[jj])
                                         : std::abs(std::remainder(best.q - q[jj], 2.0 * M_PI));
-    if (separation < (prismatic ? options_.sweep.distinct_prismatic
-                                : options_.sweep.distinct_revolute)) {
+    if (separation < (prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute)) {
       continue;
     }
     const double better = (sweep_->Loss(body_sweep, motion, q[jj], options_.sweep) - best.loss) /

@@ -62,9 +62,11 @@ struct ChainOptions {
   // turn apart, or a wrist flipped with the joints below it): when the
   // sweep's runner-up costs less than ambiguity_check_loss more per sample
   // than the best, the joint is fitted again from there with every joint
-  // below it; the lower Eq. (9) loss of the subtree wins, and the joint is
-  // ambiguous (not ok) when the two differ by less than ambiguity_mean_loss
-  // per sample [m]. Calibrated on the bundled robot's 46 edge-weighted fits
+  // below it; the lower Eq. (9) loss of the subtree wins (of its bodies the
+  // two place apart, see alike_share), and the joint is ambiguous (not ok)
+  // when the two differ by less than ambiguity_mean_loss per sample of the
+  // whole subtree [m]. Calibrated, on the whole subtree's loss, on the
+  // bundled robot's 46 edge-weighted fits
   // (23 postures, with and without accessories): 91 of 92 checks chose the
   // right value, the smallest margin 0.12 mm (a flipped wrist whose only
   // tell is a drive cover); the wrong one, a gun's jaw, won by 0.006 mm.
@@ -80,6 +82,14 @@ struct ChainOptions {
   // the loss difference. The per-sample margin still divides by the whole
   // subtree's samples, so the bounds above keep their scale.
   double alike_share = 0.25;
+  // CheckFinalBasins: a sweep's best at least this far from the final value
+  // (and better by ambiguity_mean_loss per sample) is another basin. Below
+  // the sweep's distinct_* (5 deg, 20 mm): a gun's jaw 8-9 mm off, in the
+  // bench's realistic scenes, was reported ok. Not below 5 mm: on an ideal
+  // 4 mm scan the sweep put the jaw 2.8 mm from the refined value (0.5 mm
+  // off the truth), 0.1 mm/sample better. [rad], [m]
+  double final_basin_revolute = 1.0 * M_PI / 180.0;
+  double final_basin_prismatic = 0.005;
   // A revolute joint moved by pinning_revolute (a failed fit's bound) either
   // way must cost on average at least pinning_mean_loss per sample more
   // [m], else it is ambiguous. In 69 fits of the bundled robot the lower of
@@ -139,7 +149,7 @@ class ChainFitter {
   // Extension, after the whole-chain refinement: each joint's body (with
   // its children when symmetric) is swept over the joint's range at the
   // final values of every other joint. When the sweep's best lies in
-  // another basin (JointSweepOptions::distinct_*) and beats the final value
+  // another basin (ChainOptions::final_basin_*) and beats the final value
   // by more than ambiguity_mean_loss per sample, the fit is in a wrong
   // basin: the record is marked ambiguous and better_elsewhere, with that
   // value as its alternative. The sequential fit chose each basin with the
@@ -186,7 +196,8 @@ class ChainFitter {
   // A joint whose sweep found a runner-up nearly as good (a wrist turned
   // half a turn, a bare flange) is fitted again from the runner-up, with
   // every joint below it fitted anew (a wrist flip changes them too), and
-  // the subtree's Eq. (9) losses are compared: the lower wins; a margin
+  // the Eq. (9) losses of the subtree's bodies the two place apart
+  // (PlacedApart) are compared: the lower wins; a margin
   // below ChainOptions::ambiguity_mean_loss per sample makes the joint
   // ambiguous. *switched: some joint took its other value (the joints
   // above it were refined with the old subtree: refine them again).
