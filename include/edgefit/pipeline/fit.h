@@ -5,12 +5,14 @@
 //             then the precise weighted ICP (5.1.2);
 //   Sec. 5.2  every joint, parents first: the Eq. (9) sweep, then the
 //             joint-constrained weighted ICP; 5.3 end effectors alike;
-//   extensions for real scans: every station registered to the fitted model
-//   (station residuals), the whole chain refined at once without the
-//   coverings found on it (jackets, covers), and, when a station moved or a
-//   covering hides much of a link, the chain fitted again from the base on
-//   the aligned stations without the coverings; the covariance, and the
-//   verdict of each body against the scan.
+//   extensions for real scans: mixed pixels removed first (optional), every
+//   station registered to the fitted model (station residuals), the whole
+//   chain refined at once without the coverings found on it (jackets,
+//   covers), and, when a station moved or a covering hides much of a link,
+//   the chain fitted again from the base on the aligned stations without
+//   the coverings; every joint's basin checked at the final values (a joint
+//   that another value fits better takes it, and the chain is refined
+//   again); the covariance, and the verdict of each body against the scan.
 // A "body" is the link moved by a joint together with every link fixed to
 // it (fixed joints, attached end effectors): they move as one.
 #ifndef EDGEFIT_PIPELINE_FIT_H_
