@@ -186,7 +186,9 @@ int RunEdges(const Command& command) {
         {"w_high", options.w_high}}},
       {"threads", omp_get_max_threads()}};
   json["mixed_pixels"] = {{"found", mixed_found}, {"removed", FLAGS_remove_mixed_pixels}};
-  auto ratio = [](size_t a, size_t b) { return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b); };
+  auto ratio = [](size_t a, size_t b) {
+    return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b);
+  };
   if (!FLAGS_labels.empty()) {
     json["mixed_pixels"]["labelled"] = mixed_labelled;
     json["mixed_pixels"]["precision"] = ratio(mixed_right, mixed_found);

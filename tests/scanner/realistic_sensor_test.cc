@@ -45,19 +45,26 @@ VirtualScanOptions FootprintOptions() {
   return options;
 }
 
-// A plate at x = 4 in front of a wall at x = 4.5: the silhouette's cells mix
-// both ranges and are labelled; the plate's and the wall's inner cells are not.
-TEST(BeamFootprintTest, MixedPixelsLieBetweenSurfacesAndCarryTheirLabel) {
+// A plate at x = 4 in front of a wall at x = 4.5, seen from the origin
+// through a Leica P40 class beam, with range noise `noise_sigma` [m].
+Status ScanPlateBeforeWall(double noise_sigma, VirtualScan* scan) {
   Scene scene;
   scene.meshes.push_back(Box({Eigen::Vector3d(4.0, -0.1, 1.4), Eigen::Vector3d(4.02, 0.1, 1.6)},
                              LinkLabel(0)));
   scene.meshes.push_back(
       Box({Eigen::Vector3d(4.5, -3, -1), Eigen::Vector3d(4.6, 3, 4)}, kLabelBackground));
   VirtualScanOptions options = FootprintOptions();
+  options.noise_sigma = noise_sigma;
   options.asset_box_world = Eigen::AlignedBox3d(Eigen::Vector3d(4.0, -0.15, 1.35),
                                                 Eigen::Vector3d(4.02, 0.15, 1.65));
+  return ScanScene(scene, {ScannerAt(0, 0, 1.5)}, options, scan);
+}
+
+// The plate before the wall: the silhouette's cells mix both ranges and
+// are labelled; the plate's and the wall's inner cells are not.
+TEST(BeamFootprintTest, MixedPixelsLieBetweenSurfacesAndCarryTheirLabel) {
   VirtualScan scan;
-  ASSERT_TRUE(ScanScene(scene, {ScannerAt(0, 0, 1.5)}, options, &scan).ok());
+  ASSERT_TRUE(ScanPlateBeforeWall(0.0, &scan).ok());
   const OrganizedScan& s = scan.scans.scans[0];
   size_t mixed = 0, between = 0, plate = 0, wall = 0;
   for (size_t i = 0; i < s.size(); ++i) {
@@ -104,17 +111,8 @@ TEST(BeamFootprintTest, GrazingPlaneIsNotMixed) {
 // Mixed-pixel removal (scan/mixed_pixels.h) on the plate before the wall,
 // with 1 mm range noise: it finds most labelled mixed pixels and little else.
 TEST(MixedPixelRemovalTest, FindsTheLabelledMixedPixelsOfAnEdge) {
-  Scene scene;
-  scene.meshes.push_back(Box({Eigen::Vector3d(4.0, -0.1, 1.4), Eigen::Vector3d(4.02, 0.1, 1.6)},
-                             LinkLabel(0)));
-  scene.meshes.push_back(
-      Box({Eigen::Vector3d(4.5, -3, -1), Eigen::Vector3d(4.6, 3, 4)}, kLabelBackground));
-  VirtualScanOptions options = FootprintOptions();
-  options.noise_sigma = 0.001;
-  options.asset_box_world = Eigen::AlignedBox3d(Eigen::Vector3d(4.0, -0.15, 1.35),
-                                                Eigen::Vector3d(4.02, 0.15, 1.65));
   VirtualScan scan;
-  ASSERT_TRUE(ScanScene(scene, {ScannerAt(0, 0, 1.5)}, options, &scan).ok());
+  ASSERT_TRUE(ScanPlateBeforeWall(0.001, &scan).ok());
   const OrganizedScan& s = scan.scans.scans[0];
   const std::vector<uint8_t> found = FindMixedPixels(s, MixedPixelOptions());
   size_t labelled = 0, flagged = 0, right = 0, far_off = 0, far_off_found = 0;
