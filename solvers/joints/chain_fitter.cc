@@ -222,17 +222,17 @@ void ChainFitter::AddChildren(int joint, const std::vector<Pose>& T_world_link, 
                                 T_world_link[static_cast<size_t>(c.child_link)];
       SurfaceSamples child_sweep, child_icp;
       AppendBodySamples(child, sweep_samples_, Pose::Identity(), &child_sweep);
-      AppendBodySamples(child, icp_samples_, Pose::Identity(), &child_icp);
+      if (icp != nullptr) AppendBodySamples(child, icp_samples_, Pose::Identity(), &child_icp);
       if (c.type != JointType::kPrismatic) {
         SurfaceSamples round_sweep = RoundPart(child_sweep, c.axis);
         if (static_cast<double>(round_sweep.size()) >=
             options_.min_round_child_share * static_cast<double>(child_sweep.size())) {
           child_sweep = std::move(round_sweep);
-          child_icp = RoundPart(child_icp, c.axis);
+          if (icp != nullptr) child_icp = RoundPart(child_icp, c.axis);
         }
       }
       AppendPosedSamples(child_sweep, T_body_child, sweep);
-      AppendPosedSamples(child_icp, T_body_child, icp);
+      if (icp != nullptr) AppendPosedSamples(child_icp, T_body_child, icp);
     }
   }
 }
@@ -246,9 +246,9 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, const std::vector
     const LinkMotion motion =
         LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
     const Body body = MakeBody(model_, j.child_link, record.joint);
-    SurfaceSamples body_icp, body_sweep;
+    SurfaceSamples body_sweep;
     AppendBodySamples(body, sweep_samples_, Pose::Identity(), &body_sweep);
-    if (record.symmetric) AddChildren(record.joint, T_world_link, &body_icp, &body_sweep);
+    if (record.symmetric) AddChildren(record.joint, T_world_link, nullptr, &body_sweep);
     ThinSamples(samples_.max_sweep_samples, &body_sweep);
     if (body_sweep.points.empty()) continue;
     JointSweepSummary best;

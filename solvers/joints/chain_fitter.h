@@ -217,6 +217,7 @@ class ChainFitter {
   // own axis when it has one (a flange: it is where it is whatever the
   // child's value, while the rest, at a value not fitted yet, could pull
   // the joint into a wrong basin it would not leave; a wrist under a gun).
+  // icp may be null (a sweep alone).
   void AddChildren(int joint, const std::vector<Pose>& T_world_link, SurfaceSamples* icp,
                    SurfaceSamples* sweep) const;
   // The links with in[l] that q and q_other place apart (see
