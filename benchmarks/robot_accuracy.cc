@@ -231,7 +231,7 @@ int Run() {
         if (FLAGS_progress)
           progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
         BenchResult fit;
-        status = FitBenchCase(model, c, scan.scans, options, &fit, progress);
+        status = FitBenchCase(model, c, scan.scans, Pose::Identity(), options, &fit, progress);
         CHECK(status.ok()) << c.name << ": " << status.message();
         FitRecord record;
         record.case_name = c.name;

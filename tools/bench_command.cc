@@ -241,37 +241,42 @@ int RunBench(const Command& command) {
         if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
         for (const std::string& scenery : sceneries)
           for (const std::string& sensor : sensors)
-          for (const double noise : noises)
-            for (const double scanners : scanner_counts) {
-              const ScanSetting scan_setting{scenery, noise, static_cast<int>(scanners), repeat,
-                                             sensor};
-              AssetScanOptions scan_options;
-              EDGEFIT_RETURN_IF_ERROR_EXIT(command, SensorOptionsFromFlags(sensor, &scan_options));
-              scan_options.accessories = scenery == "with";
-              scan_options.scanners = scan_setting.scanners;
-              scan_options.scan.spacing = 1e-3 * FLAGS_spacing_mm;
-              scan_options.scan.noise_sigma = 1e-3 * noise;
-              const std::string scene = asset + " " + c.name + ", " + scenery + " accessories, " +
-                                        sensor + " sensor" +
-                                        (axes.repeat ? ", seed " + std::to_string(seed) : "");
-              Progress("bench: scanning " + scene + " (edgefit scan " + ScanFlagsFor(model, c) +
-                       (scan_options.accessories ? " --accessories" : "") + " --sensor=" + sensor +
-                       (FLAGS_jackets ? " --jackets" : "") + " --spacing_mm=" +
-                       std::to_string(FLAGS_spacing_mm) + " --noise_mm=" + std::to_string(noise) +
-                       " --scanners=" + std::to_string(scan_setting.scanners) + ")");
-              VirtualScan scan;
-              EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScanBenchCase(model, c, scan_options, &scan));
-              for (const FitSetting& fit : fits) {
-                Run run{asset, c.name, scan_setting, fit, Label(axes, scan_setting, fit), {}};
-                Progress("bench: " + scene + ", " + fit.weighting + " weights, " + run.label);
-                FitOptions options;
-                EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFor(kind, fit, seed, &options));
+            for (const double noise : noises)
+              for (const double scanners : scanner_counts) {
+                const ScanSetting scan_setting{scenery, noise, static_cast<int>(scanners), repeat,
+                                               sensor};
+                AssetScanOptions scan_options;
+                EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                                             SensorOptionsFromFlags(sensor, &scan_options));
+                scan_options.accessories = scenery == "with";
+                scan_options.scanners = scan_setting.scanners;
+                scan_options.scan.spacing = 1e-3 * FLAGS_spacing_mm;
+                scan_options.scan.noise_sigma = 1e-3 * noise;
+                const std::string scene = asset + " " + c.name + ", " + scenery + " accessories, " +
+                                          sensor + " sensor" +
+                                          (axes.repeat ? ", seed " + std::to_string(seed) : "");
+                Progress("bench: scanning " + scene + " (edgefit scan " + ScanFlagsFor(model, c) +
+                         (scan_options.accessories ? " --accessories" : "") +
+                         " --sensor=" + sensor + (FLAGS_jackets ? " --jackets" : "") +
+                         " --spacing_mm=" + std::to_string(FLAGS_spacing_mm) +
+                         " --noise_mm=" + std::to_string(noise) +
+                         " --scanners=" + std::to_string(scan_setting.scanners) + ")");
+                VirtualScan scan;
+                Pose T_survey_world;
                 EDGEFIT_RETURN_IF_ERROR_EXIT(
-                    command, FitBenchCase(model, c, scan.scans, options, &run.result,
-                                          FLAGS_fit_progress ? ProgressFn(Progress) : nullptr));
-                runs.push_back(std::move(run));
+                    command, ScanBenchCase(model, c, scan_options, &scan, &T_survey_world));
+                for (const FitSetting& fit : fits) {
+                  Run run{asset, c.name, scan_setting, fit, Label(axes, scan_setting, fit), {}};
+                  Progress("bench: " + scene + ", " + fit.weighting + " weights, " + run.label);
+                  FitOptions options;
+                  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFor(kind, fit, seed, &options));
+                  EDGEFIT_RETURN_IF_ERROR_EXIT(
+                      command,
+                      FitBenchCase(model, c, scan.scans, T_survey_world, options, &run.result,
+                                   FLAGS_fit_progress ? ProgressFn(Progress) : nullptr));
+                  runs.push_back(std::move(run));
+                }
               }
-            }
       }
     }
   }
@@ -283,19 +288,23 @@ int RunBench(const Command& command) {
   for (const std::string& asset : assets) PrintJointTable(runs, asset, true, labelled);
   std::printf(
       "\n## Base, tool tip and time per stage\n\n| asset | posture | accessories | weights | "
-      "settings | points | base [mm] | base [deg] | tool tip [mm] | edges | base rough | "
+      "settings | points | base [mm] | base [deg] | in survey frame [mm, deg] | tool tip [mm] | "
+      "edges | base rough | "
       "base precise | chain | refine | total | ok |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Run& run : runs) {
     const BenchResult& r = run.result;
     std::printf(
-        "| %s | %s | %s | %s | %s | %.2f M | %.3f | %.4f | %.3f | %.2f s | %.2f s | %.2f s | "
+        "| %s | %s | %s | %s | %s | %.2f M | %.3f | %.4f | %.3f, %.4f | %.3f | %.2f s | %.2f s | "
+        "%.2f s | "
         "%.2f s | %.2f s | %.2f s | %s |\n",
         run.asset.c_str(), run.posture.c_str(), run.scan.accessories.c_str(),
         run.fit.weighting.c_str(), run.label.c_str(), 1e-6 * static_cast<double>(r.points),
-        1e3 * r.errors.base_translation, r.errors.base_rotation / kDeg, 1e3 * r.errors.tool_tip,
-        r.timings.edges, r.timings.base_rough, r.timings.base_precise, r.timings.chain,
-        r.timings.refine, r.timings.total, r.failed ? "FAILED" : (r.ok ? "ok" : "not ok"));
+        1e3 * r.errors.base_translation, r.errors.base_rotation / kDeg,
+        1e3 * r.errors.base_translation_survey, r.errors.base_rotation_survey / kDeg,
+        1e3 * r.errors.tool_tip, r.timings.edges, r.timings.base_rough, r.timings.base_precise,
+        r.timings.chain, r.timings.refine, r.timings.total,
+        r.failed ? "FAILED" : (r.ok ? "ok" : "not ok"));
   }
   if (labelled || axes.repeat) PrintSummary(runs);
 
@@ -346,20 +355,47 @@ Command BenchCommand() {
       "                [--sensors=ideal,realistic,stations+as_built] [--jackets]\n"
       "Run from the source folder (the defaults name assets/...). "
       "benchmarks/plot_ablation.py draws error against w_high or lambda from --out_json.",
-      {"assets",         "robot_urdf",    "robot_attach",
-       "robot_postures", "random_postures", "fit_progress", "conveyor_urdf", "conveyor_postures",
-       "scenes",         "weightings",    "only",
-       "base_range_m",   "w_highs",       "lambdas",
-       "losses",         "loss_scale_mm", "sweep_steps_deg",
-       "searches",       "refine_chains", "noises_mm",
-       "scanner_counts", "repeats",       "parameterization",
-       "out_csv",        "out_json",      "spacing_mm",
-       "noise_mm",       "scanners",      "seed",
-       "w_high",         "lambda",        "loss",
-       "refine_chain",   "threads",       "sensors",
-       "align_stations", "covering_rounds", "remove_mixed_pixels",
+      {"assets",
+       "robot_urdf",
+       "robot_attach",
+       "robot_postures",
+       "random_postures",
+       "fit_progress",
+       "conveyor_urdf",
+       "conveyor_postures",
+       "scenes",
+       "weightings",
+       "only",
+       "base_range_m",
+       "w_highs",
+       "lambdas",
+       "losses",
+       "loss_scale_mm",
+       "sweep_steps_deg",
+       "searches",
+       "refine_chains",
+       "noises_mm",
+       "scanner_counts",
+       "repeats",
+       "parameterization",
+       "out_csv",
+       "out_json",
+       "spacing_mm",
+       "noise_mm",
+       "scanners",
+       "seed",
+       "w_high",
+       "lambda",
+       "loss",
+       "refine_chain",
+       "threads",
+       "sensors",
+       "align_stations",
+       "covering_rounds",
+       "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",
-       "beam",           "jackets"},
+       "beam",
+       "jackets"},
       RunBench};
 }
 

@@ -99,8 +99,9 @@ int RunFit(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, Fit(model, scans, options, &Progress, &fit));
   FitErrors errors;
   if (!FLAGS_truth.empty()) {
-    const Status status =
-        CompareWithTruth(model, fit.q, fit.T_world_base, truth.joints, truth.T_world_base, &errors);
+    const Status status = CompareWithTruth(
+        model, fit.q, fit.T_world_base, truth.joints, truth.T_world_base,
+        SurveyFrame(truth.T_world_scanners, truth.sensor.T_world_scanners_written), &errors);
     if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
   }
 
@@ -112,6 +113,8 @@ int RunFit(const Command& command) {
     result["errors"] = {{"joints", e},
                         {"base_translation_m", errors.base_translation},
                         {"base_rotation_rad", errors.base_rotation},
+                        {"base_survey_translation_m", errors.base_translation_survey},
+                        {"base_survey_rotation_rad", errors.base_rotation_survey},
                         {"tool_tip_link", errors.tool_tip_link},
                         {"tool_tip_m", errors.tool_tip}};
   }
@@ -191,9 +194,12 @@ int RunFit(const Command& command) {
                   prismatic ? "mm " : "deg", spread);
     }
   } else {
-    std::printf("base error: %.3f mm, %.4f deg; tool tip (%s) error: %.3f mm\n",
-                errors.base_translation * 1e3, errors.base_rotation * 180.0 / M_PI,
-                errors.tool_tip_link.c_str(), errors.tool_tip * 1e3);
+    std::printf(
+        "base error: %.3f mm, %.4f deg (in the survey's frame %.3f mm, %.4f deg); tool tip (%s) "
+        "error: %.3f mm\n",
+        errors.base_translation * 1e3, errors.base_rotation * 180.0 / M_PI,
+        errors.base_translation_survey * 1e3, errors.base_rotation_survey * 180.0 / M_PI,
+        errors.tool_tip_link.c_str(), errors.tool_tip * 1e3);
     std::printf("  %-24s %12s %12s %10s\n", "joint", "truth", "fit", "error");
     for (const JointError& j : errors.joints) {
       const double scale = j.prismatic ? 1e3 : 180.0 / M_PI;
@@ -243,7 +249,10 @@ Command FitCommand() {
        "loss_scale_mm",
        "lambda",
        "parameterization",
-       "refine_chain", "align_stations", "covering_rounds", "remove_mixed_pixels",
+       "refine_chain",
+       "align_stations",
+       "covering_rounds",
+       "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",
        "init",
        "truth",

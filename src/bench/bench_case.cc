@@ -84,7 +84,8 @@ Status RandomPostureCases(const KinematicModel& model, int count, uint64_t seed,
       }
       EDGEFIT_RETURN_IF_ERROR(BuriedLink(model, c, &buried));
       if (buried.empty()) break;
-      if (redrawn) redrawn(c.name + ": posture redrawn, " + buried + " is seen from none of 8 scanners");
+      if (redrawn)
+        redrawn(c.name + ": posture redrawn, " + buried + " is seen from none of 8 scanners");
     }
     cases->push_back(std::move(c));
   }
@@ -121,13 +122,19 @@ std::string ScanFlagsFor(const KinematicModel& model, const BenchCase& bench_cas
 }
 
 Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
-                     AssetScanOptions scan_options, VirtualScan* scan) {
+                     AssetScanOptions scan_options, VirtualScan* scan, Pose* T_survey_world) {
   scan_options.seed = bench_case.seed;
-  return ScanAsset(model, bench_case.q, bench_case.T_world_base, scan_options, scan, nullptr);
+  std::vector<Pose> T_world_scanners;
+  EDGEFIT_RETURN_IF_ERROR(ScanAsset(model, bench_case.q, bench_case.T_world_base, scan_options,
+                                    scan, &T_world_scanners));
+  std::vector<Pose> T_survey_scanners;
+  for (const OrganizedScan& s : scan->scans.scans) T_survey_scanners.push_back(s.T_world_scanner());
+  *T_survey_world = SurveyFrame(T_world_scanners, T_survey_scanners);
+  return Status::Ok();
 }
 
 Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
-                    const FitOptions& fit_options, BenchResult* result,
+                    const Pose& T_survey_world, const FitOptions& fit_options, BenchResult* result,
                     const ProgressFn& progress) {
   *result = BenchResult();
   result->points = scans.TotalValid();
@@ -138,9 +145,9 @@ Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, co
   result->chain = fit.chain_refinement;
   result->ok = fit.ok;
   result->message = fit.message;
-  EDGEFIT_RETURN_IF_ERROR(CompareWithTruth(model, fit.q, fit.T_world_base,
-                                           NamedJointValues(model, bench_case.q),
-                                           bench_case.T_world_base, &result->errors));
+  EDGEFIT_RETURN_IF_ERROR(
+      CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, bench_case.q),
+                       bench_case.T_world_base, T_survey_world, &result->errors));
   for (const JointError& e : result->errors.joints) {
     if (e.independent && e.error > (e.prismatic ? kFailedPrismatic : kFailedRevolute)) {
       result->failed = true;

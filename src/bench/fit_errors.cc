@@ -26,10 +26,31 @@ int ToolTipLink(const KinematicModel& model) {
   return best;
 }
 
+Pose SurveyFrame(const std::vector<Pose>& T_world_scanners_true,
+                 const std::vector<Pose>& T_survey_scanners_written) {
+  const size_t n = T_world_scanners_true.size();
+  if (n == 0 || T_survey_scanners_written.size() != n) return Pose::Identity();
+  Eigen::Vector3d rotation = Eigen::Vector3d::Zero(), translation = Eigen::Vector3d::Zero();
+  for (size_t s = 0; s < n; ++s) {
+    const Pose T_survey_world = T_survey_scanners_written[s] * T_world_scanners_true[s].inverse();
+    const Eigen::AngleAxisd angle_axis(T_survey_world.linear());
+    rotation += angle_axis.angle() * angle_axis.axis();
+    translation += T_survey_world.translation();
+  }
+  rotation /= static_cast<double>(n);
+  Pose T_survey_world = Pose::Identity();
+  if (rotation.norm() > 0.0) {
+    T_survey_world.linear() = Eigen::AngleAxisd(rotation.norm(), rotation.normalized()).matrix();
+  }
+  T_survey_world.translation() = translation / static_cast<double>(n);
+  return T_survey_world;
+}
+
 Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& q_fit,
                         const Pose& T_world_base_fit,
                         const std::vector<std::pair<std::string, double>>& truth_joints,
-                        const Pose& T_world_base_truth, FitErrors* errors) {
+                        const Pose& T_world_base_truth, const Pose& T_survey_world,
+                        FitErrors* errors) {
   *errors = FitErrors();
   std::vector<double> q_truth(model.joints().size(), 0.0);
   for (size_t j = 0; j < model.joints().size(); ++j) {
@@ -65,6 +86,9 @@ Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& 
   const Pose delta = T_world_base_truth.inverse() * T_world_base_fit;
   errors->base_translation = delta.translation().norm();
   errors->base_rotation = Eigen::AngleAxisd(delta.linear()).angle();
+  const Pose delta_survey = (T_survey_world * T_world_base_truth).inverse() * T_world_base_fit;
+  errors->base_translation_survey = delta_survey.translation().norm();
+  errors->base_rotation_survey = Eigen::AngleAxisd(delta_survey.linear()).angle();
   return Status::Ok();
 }
 

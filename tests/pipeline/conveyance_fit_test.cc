@@ -13,15 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "edgefit/core/split_mix64.h"
-#include "edgefit/model/joint_values.h"
-#include "edgefit/scanner/random_joints.h"
-#include "edgefit/model/urdf_loader.h"
-#include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/split_mix64.h"
+#include "edgefit/model/joint_values.h"
+#include "edgefit/model/urdf_loader.h"
+#include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/truth.h"
 
 namespace edgefit {
@@ -77,7 +77,7 @@ TEST(ConveyanceFitTest, RecoversBaseAndPrismaticJointsFromTheArmTips) {
   EXPECT_EQ(fit.arm_tips.model_tips.size(), 4u);
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, s.q),
-                               s.T_world_base, &errors)
+                               s.T_world_base, Pose::Identity(), &errors)
                   .ok());
   // The rough pose is within the precise ICP's first gate (5 cm).
   const Pose T_rough_truth = fit.base_rough.T_world_base.inverse() * s.T_world_base;
@@ -120,7 +120,7 @@ TEST(ConveyanceFitTest, AFrameTurnedHalfATurnIsToldByItsLinks) {
     ASSERT_TRUE(Fit(s.model, scan.scans, options, nullptr, &fit).ok());
     FitErrors errors;
     ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, q),
-                                 T_world_base, &errors)
+                                 T_world_base, Pose::Identity(), &errors)
                     .ok());
     std::printf("  base_alternatives %d: base %.3f mm, %.4f deg%s\n", alternatives,
                 1e3 * errors.base_translation, errors.base_rotation / kDeg,

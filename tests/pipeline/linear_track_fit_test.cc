@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "edgefit/core/split_mix64.h"
-#include "edgefit/model/composition.h"
-#include "edgefit/scanner/random_joints.h"
-#include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/split_mix64.h"
+#include "edgefit/model/composition.h"
+#include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
+#include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/truth.h"
 
 namespace edgefit {
@@ -59,7 +59,7 @@ TEST(LinearTrackFitTest, TheRailSlidesToItsPlace) {
   ASSERT_TRUE(Fit(model, scan.scans, FitOptionsFor(kind), nullptr, &fit).ok());
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, q),
-                               T_world_base, &errors)
+                               T_world_base, Pose::Identity(), &errors)
                   .ok());
   std::printf("  %zu points; base %.3f mm %.4f deg; %.1f s\n", scan.scans.TotalValid(),
               1e3 * errors.base_translation, errors.base_rotation / kDeg, fit.timings.total);

@@ -92,7 +92,7 @@ FitErrors FitScene(const ScanSet& scans, FitResult* fit) {
   EXPECT_TRUE(status.ok()) << status.message();
   FitErrors errors;
   CHECK(CompareWithTruth(s.model, fit->q, fit->T_world_base, NamedJointValues(s.model, s.q),
-                         s.T_world_base, &errors)
+                         s.T_world_base, Pose::Identity(), &errors)
             .ok());
   return errors;
 }
@@ -211,7 +211,7 @@ TEST(RobotFitTest, BaseHintTakesTheHeightFromTheFloor) {
   ASSERT_TRUE(Fit(s.model, lowered, options, nullptr, &fit).ok());
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, s.q),
-                               T_shift * s.T_world_base, &errors)
+                               T_shift * s.T_world_base, Pose::Identity(), &errors)
                   .ok());
   EXPECT_TRUE(fit.ok) << fit.message;
   EXPECT_LT(errors.base_translation, 0.0001);

@@ -70,13 +70,15 @@ struct BenchResult {
 };
 
 // The case's scene (ScanAsset with scan_options, its seed replaced by the
-// case's): scan it once, fit it with several options.
+// case's): scan it once, fit it with several options. T_survey_world: the
+// frame its stations' written poses put the world in (SurveyFrame).
 Status ScanBenchCase(const KinematicModel& model, const BenchCase& bench_case,
-                     AssetScanOptions scan_options, VirtualScan* scan);
+                     AssetScanOptions scan_options, VirtualScan* scan, Pose* T_survey_world);
 
-// Fits the scan of the case with fit_options and scores it.
+// Fits the scan of the case with fit_options and scores it; T_survey_world
+// from ScanBenchCase.
 Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, const ScanSet& scans,
-                    const FitOptions& fit_options, BenchResult* result,
+                    const Pose& T_survey_world, const FitOptions& fit_options, BenchResult* result,
                     const ProgressFn& progress = nullptr);
 
 // Mean, 95th percentile (the smallest value at or above 95 % of them) and

@@ -27,6 +27,11 @@ struct FitErrors {
   std::vector<JointError> joints;  // every non-fixed joint, model order
   double base_translation = 0.0;   // [m]
   double base_rotation = 0.0;      // [rad]
+  // The base against the truth moved into the survey's frame (SurveyFrame):
+  // what a scan whose stations carry registration residuals can tell. The
+  // same as above when the stations are exact.
+  double base_translation_survey = 0.0;  // [m]
+  double base_rotation_survey = 0.0;     // [rad]
   // The tool tip (ToolTipLink): its origin's distance from where the
   // truth puts it [m], base and every joint error together.
   std::string tool_tip_link;
@@ -40,12 +45,26 @@ struct FitErrors {
 // is not its TCP. The bundled robot with its gun: `tcp`; without: `tool0`.
 int ToolTipLink(const KinematicModel& model);
 
+// The survey's frame: where a multi-station survey puts the world when each
+// station's pose was written with a registration residual, T_survey_world =
+// the mean of the stations' T_written * T_true^-1 (rotation vectors and
+// translations averaged: first order in residuals of millimetres and
+// hundredths of a degree). A scan of the stations alone cannot tell it from
+// the true world: the fit's station alignment keeps the stations' mean
+// (station_alignment.h), so a base up to that mean off the truth is as close
+// as the scan allows. Identity for exact stations, or lists that differ in
+// size.
+Pose SurveyFrame(const std::vector<Pose>& T_world_scanners_true,
+                 const std::vector<Pose>& T_survey_scanners_written);
+
 // truth_joints: name -> value of every non-fixed joint (Truth::joints).
+// T_survey_world: SurveyFrame of the scan's stations (base_*_survey).
 // Fails when a joint of the model is missing from the truth.
 Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& q_fit,
                         const Pose& T_world_base_fit,
                         const std::vector<std::pair<std::string, double>>& truth_joints,
-                        const Pose& T_world_base_truth, FitErrors* errors);
+                        const Pose& T_world_base_truth, const Pose& T_survey_world,
+                        FitErrors* errors);
 
 }  // namespace edgefit
 
