@@ -171,6 +171,7 @@ nlohmann::json RunJson(const Run& run) {
             {"refine", t.refine},
             {"total", t.total}}},
           {"ok", run.result.ok},
+          {"message", run.result.message},
           {"failed", run.result.failed}};
 }
 

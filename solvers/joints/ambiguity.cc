@@ -1,7 +1,8 @@
 // ChainFitter's ambiguity checks (extensions of Sec. 5.2): a joint whose
-// sweep found a near-equal runner-up is fitted from there too, and the
-// lower Eq. (9) loss of the bodies the two values place apart wins; a
-// revolute joint the scan does not pin down is flagged.
+// sweep found a near-equal runner-up, or whose sweep at the final values
+// prefers another basin, is fitted from there too as a branch, and the
+// lower Eq. (9) loss of the bodies the two place apart wins; a revolute
+// joint the scan does not pin down is flagged.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,9 +30,40 @@ std::vector<bool> ChainFitter::PlacedApart(const Pose& T_world_base, const std::
   }
   std::vector<bool> apart(in.size(), false);
   for (size_t l = 0; l < in.size(); ++l) {
-    apart[l] = in[l] && !sweep_samples_[l].points.empty() && moved[l] >= options_.alike_share * most;
+    apart[l] =
+        in[l] && !sweep_samples_[l].points.empty() && moved[l] >= options_.alike_share * most;
   }
   return apart;
+}
+
+Status ChainFitter::FitBranch(const Pose& T_world_base, size_t i, double value,
+                              const std::vector<double>& q, const std::vector<JointRecord>& records,
+                              std::vector<double>* q_other,
+                              std::vector<JointRecord>* other_records) {
+  const Joint& j = model_.joints()[static_cast<size_t>(records[i].joint)];
+  *q_other = q;
+  *other_records = records;
+  (*q_other)[static_cast<size_t>(records[i].joint)] = value;
+  (void)model_.ResolveDependentJoints(q_other);
+  const std::vector<bool> below = SubtreeMask(j.child_link);
+  for (size_t k = i + 1; k < records.size(); ++k) {
+    const int link = model_.joints()[static_cast<size_t>(records[k].joint)].child_link;
+    if (below[static_cast<size_t>(link)]) {
+      EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q_other, &(*other_records)[k]));
+    }
+  }
+  return RefineSubtrees(T_world_base, i, j.child_link, other_records, q_other);
+}
+
+double ChainFitter::BranchGain(const Pose& T_world_base, const std::vector<double>& q,
+                               const std::vector<double>& q_other, int link) const {
+  const std::vector<bool> below = SubtreeMask(link);
+  size_t samples = 0, placed_apart_samples = 0;  // the subtree's, the scored bodies'
+  for (size_t l = 0; l < below.size(); ++l) samples += below[l] ? sweep_samples_[l].size() : 0;
+  const std::vector<bool> apart = PlacedApart(T_world_base, q, q_other, below);
+  const double loss = LinksLoss(T_world_base, q, apart, &placed_apart_samples);
+  const double other_loss = LinksLoss(T_world_base, q_other, apart, &placed_apart_samples);
+  return (loss - other_loss) / static_cast<double>(std::max<size_t>(samples, 1));
 }
 
 Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
@@ -41,19 +73,10 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     const JointRecord& record = (*records)[i];
     if (!(record.sweep_margin < options_.ambiguity_check_loss)) continue;
     const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
-    std::vector<double> q_other = *q;
-    std::vector<JointRecord> other_records = *records;
-    q_other[static_cast<size_t>(record.joint)] = record.sweep.runner_up_q;
-    (void)model_.ResolveDependentJoints(&q_other);
-    const std::vector<bool> below = SubtreeMask(j.child_link);
-    for (size_t k = i + 1; k < records->size(); ++k) {
-      const int link = model_.joints()[static_cast<size_t>((*records)[k].joint)].child_link;
-      if (below[static_cast<size_t>(link)]) {
-        EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, &q_other, &other_records[k]));
-      }
-    }
-    EDGEFIT_RETURN_IF_ERROR(
-        RefineSubtrees(T_world_base, i, j.child_link, &other_records, &q_other));
+    std::vector<double> q_other;
+    std::vector<JointRecord> other_records;
+    EDGEFIT_RETURN_IF_ERROR(FitBranch(T_world_base, i, record.sweep.runner_up_q, *q, *records,
+                                      &q_other, &other_records));
     const size_t jj = static_cast<size_t>(record.joint);
     const double separation = j.type == JointType::kPrismatic
                                   ? std::abs(q_other[jj] - (*q)[jj])
@@ -61,12 +84,8 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     const double distinct = j.type == JointType::kPrismatic ? options_.sweep.distinct_prismatic
                                                             : options_.sweep.distinct_revolute;
     if (separation < 0.5 * distinct) continue;  // back in the same basin: no alternative
-    size_t samples = 0, placed_apart_samples = 0;  // the subtree's, the scored bodies'
-    for (size_t l = 0; l < below.size(); ++l) samples += below[l] ? sweep_samples_[l].size() : 0;
-    const std::vector<bool> apart = PlacedApart(T_world_base, *q, q_other, below);
-    const double loss = LinksLoss(T_world_base, *q, apart, &placed_apart_samples);
-    const double other_loss = LinksLoss(T_world_base, q_other, apart, &placed_apart_samples);
-    const bool take_other = other_loss < loss;
+    const double gain = BranchGain(T_world_base, *q, q_other, j.child_link);
+    const bool take_other = gain > 0.0;
     const double alternative = take_other ? (*q)[jj] : q_other[jj];
     if (take_other) {
       *switched = true;
@@ -75,8 +94,7 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     }
     JointRecord& checked = (*records)[i];
     checked.alternative = alternative;
-    checked.margin =
-        std::abs(other_loss - loss) / static_cast<double>(std::max<size_t>(samples, 1));
+    checked.margin = std::abs(gain);
     checked.ambiguous = checked.margin < options_.ambiguity_mean_loss;
     char line[320];
     std::snprintf(
@@ -84,6 +102,74 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
         j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin,
         take_other ? " (the first fit's value)" : "", checked.ambiguous ? ": AMBIGUOUS" : "");
     say_(line);
+  }
+  return Status::Ok();
+}
+
+Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::vector<double>* q,
+                                     std::vector<JointRecord>* records, bool* moved) {
+  *moved = false;
+  for (size_t i = 0; i < records->size(); ++i) {
+    JointRecord& record = (*records)[i];
+    const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
+    const size_t jj = static_cast<size_t>(record.joint);
+    const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
+    const LinkMotion motion =
+        LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
+    const Body body = MakeBody(model_, j.child_link, record.joint);
+    SurfaceSamples body_sweep;
+    AppendBodySamples(body, sweep_samples_, Pose::Identity(), &body_sweep);
+    if (record.symmetric) AddChildren(record.joint, T_world_link, nullptr, &body_sweep);
+    ThinSamples(samples_.max_sweep_samples, &body_sweep);
+    if (body_sweep.points.empty()) continue;
+    JointSweepSummary best;
+    EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, motion, options_.sweep, &best));
+    const bool prismatic = j.type == JointType::kPrismatic;
+    const double separation = prismatic ? std::abs(best.q - (*q)[jj])
+                                        : std::abs(std::remainder(best.q - (*q)[jj], 2.0 * M_PI));
+    if (separation < (prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute)) {
+      continue;
+    }
+    const double better = (sweep_->Loss(body_sweep, motion, (*q)[jj], options_.sweep) - best.loss) /
+                          static_cast<double>(body_sweep.points.size());
+    if (!(better > options_.ambiguity_mean_loss)) continue;
+    std::vector<double> q_other;
+    std::vector<JointRecord> other_records;
+    EDGEFIT_RETURN_IF_ERROR(
+        FitBranch(T_world_base, i, best.q, *q, *records, &q_other, &other_records));
+    const double gain = BranchGain(T_world_base, *q, q_other, j.child_link);
+    const bool elsewhere = gain > options_.ambiguity_mean_loss;
+    char line[400];
+    std::snprintf(line, sizeof(line),
+                  "final basins: %s = %.5f, but swept at the final values of the others %.5f "
+                  "fits %.3f mm/sample better; with the joints below fitted again there (%s = "
+                  "%.5f) %.3f mm/sample %s%s",
+                  j.name.c_str(), (*q)[jj], best.q, 1e3 * better, j.name.c_str(), q_other[jj],
+                  1e3 * std::abs(gain), gain > 0.0 ? "better" : "worse",
+                  !elsewhere ? ": kept" : (take ? ": taken" : ": NOT OK"));
+    say_(line);
+    if (!elsewhere) continue;
+    if (take) {
+      // The branch's joints were fitted anew: what the earlier checks said
+      // of their old values no longer holds (CheckPinning again after the
+      // refinement).
+      const std::vector<bool> below = SubtreeMask(j.child_link);
+      for (JointRecord& r : other_records) {
+        if (!below[static_cast<size_t>(model_.joints()[static_cast<size_t>(r.joint)].child_link)])
+          continue;
+        r.ambiguous = r.better_elsewhere = false;
+        r.alternative = 0.0;
+        r.margin = std::numeric_limits<double>::infinity();
+      }
+      *q = std::move(q_other);
+      *records = std::move(other_records);
+      *moved = true;
+      continue;
+    }
+    record.ambiguous = true;
+    record.better_elsewhere = true;
+    record.alternative = q_other[jj];
+    record.margin = gain;
   }
   return Status::Ok();
 }

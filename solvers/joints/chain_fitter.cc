@@ -119,7 +119,6 @@ Status ChainFitter::Fit(const Pose& T_world_base, std::vector<double>* q,
                                options_.settle_tolerance_m);
     }
   }
-  CheckPinning(T_world_base, records, *q);
   size_t samples = 0;
   *loss = SubtreeLoss(T_world_base, *q, model_.root_link(), &samples);
   return Status::Ok();
@@ -235,45 +234,6 @@ void ChainFitter::AddChildren(int joint, const std::vector<Pose>& T_world_link, 
       if (icp != nullptr) AppendPosedSamples(child_icp, T_body_child, icp);
     }
   }
-}
-
-Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, const std::vector<double>& q,
-                                     std::vector<JointRecord>* records) const {
-  const std::vector<Pose> T_world_link = model_.ForwardKinematics(q, T_world_base);
-  for (JointRecord& record : *records) {
-    const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
-    const size_t jj = static_cast<size_t>(record.joint);
-    const LinkMotion motion =
-        LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
-    const Body body = MakeBody(model_, j.child_link, record.joint);
-    SurfaceSamples body_sweep;
-    AppendBodySamples(body, sweep_samples_, Pose::Identity(), &body_sweep);
-    if (record.symmetric) AddChildren(record.joint, T_world_link, nullptr, &body_sweep);
-    ThinSamples(samples_.max_sweep_samples, &body_sweep);
-    if (body_sweep.points.empty()) continue;
-    JointSweepSummary best;
-    EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, motion, options_.sweep, &best));
-    const bool prismatic = j.type == JointType::kPrismatic;
-    const double separation = prismatic ? std::abs(best.q - q[jj])
-                                        : std::abs(std::remainder(best.q - q[jj], 2.0 * M_PI));
-    if (separation < (prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute)) {
-      continue;
-    }
-    const double better = (sweep_->Loss(body_sweep, motion, q[jj], options_.sweep) - best.loss) /
-                          static_cast<double>(body_sweep.points.size());
-    if (!(better > options_.ambiguity_mean_loss)) continue;
-    record.ambiguous = true;
-    record.better_elsewhere = true;
-    record.alternative = best.q;
-    record.margin = better;
-    char line[320];
-    std::snprintf(line, sizeof(line),
-                  "final basins: %s = %.5f, but swept at the final values of the others %.5f fits "
-                  "%.3f mm/sample better: NOT OK",
-                  j.name.c_str(), q[jj], best.q, 1e3 * better);
-    say_(line);
-  }
-  return Status::Ok();
 }
 
 Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, JointRecord* record,

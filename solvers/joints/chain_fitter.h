@@ -141,7 +141,7 @@ class ChainFitter {
 
   // Every joint on the base at T_world_base: the chain pass with its
   // resweeps, then (refine_subtrees) the subtree pass, the alternatives and
-  // the passes after a switch, then the pinning check. *q: every joint
+  // the passes after a switch. *q: every joint
   // (model order, dependent ones resolved as far as possible); *records:
   // one per independent joint in fit order; *loss: the Eq. (9) loss of the
   // whole model.
@@ -150,16 +150,38 @@ class ChainFitter {
 
   // Extension, after the whole-chain refinement: each joint's body (with
   // its children when symmetric) is swept over the joint's range at the
-  // final values of every other joint. When the sweep's best lies in
-  // another basin (ChainOptions::final_basin_*) and beats the final value
-  // by more than ambiguity_mean_loss per sample, the fit is in a wrong
-  // basin: the record is marked ambiguous and better_elsewhere, with that
-  // value as its alternative. The sequential fit chose each basin with the
-  // joints above it not yet final (a gun's jaw swept under a wrist a degree
-  // off); the final values are the best context there is.
-  Status CheckFinalBasins(const Pose& T_world_base, const std::vector<double>& q,
-                          std::vector<JointRecord>* records) const;
+  // final values of every other joint. The sequential fit chose each basin
+  // with the joints above it not yet final (a gun's jaw swept under a wrist
+  // a degree off); the final values are the best context there is. When
+  // the sweep's best lies in another basin (ChainOptions::final_basin_*)
+  // and beats the final value by more than ambiguity_mean_loss per sample,
+  // the joint is fitted from there as a branch (FitBranch: the joints below
+  // it fitted anew, since a wrist flip moves three joints at once) and the
+  // two are compared as CheckAlternatives does. A branch better by more
+  // than ambiguity_mean_loss per sample of the subtree is another basin:
+  // take = true moves *q there (*moved; refine the chain again), take =
+  // false marks the record ambiguous and better_elsewhere with the
+  // branch's value as its alternative (the fit is not ok). A branch that
+  // is not better leaves the joint as it is.
+  Status CheckFinalBasins(const Pose& T_world_base, bool take, std::vector<double>* q,
+                          std::vector<JointRecord>* records, bool* moved);
 
+  // Whether the scan pins each revolute joint down at the final values q:
+  // its subtree's Eq. (9) loss at the joint's value moved by
+  // ChainOptions::pinning_revolute must rise by at least pinning_mean_loss
+  // per sample, on average over the two sides within the limits; else the
+  // joint is ambiguous with the moved value as its alternative (a round link
+  // that nothing below it tells). Checked at the sequential fit's values
+  // instead, jacketed wrists pulled off their minimum rose by -0.043 to
+  // 0.020 mm/sample, and 4 of 12 right fits of big robots with a gun were
+  // called ambiguous.
+  void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
+                    const std::vector<double>& q) const;
+  // How much better q_other fits than q the bodies below `link` that the
+  // two place apart (PlacedApart): their Eq. (9) loss difference per
+  // sample of the whole subtree [m]; negative when q fits better.
+  double BranchGain(const Pose& T_world_base, const std::vector<double>& q,
+                    const std::vector<double>& q_other, int link) const;
   // The Eq. (9) loss of every link at or below `link` at joint values q;
   // *samples counts the sweep samples scored.
   double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,
@@ -205,13 +227,12 @@ class ChainFitter {
   // above it were refined with the old subtree: refine them again).
   Status CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
                            std::vector<double>* q, bool* switched);
-  // Whether the scan pins each revolute joint down: its subtree's Eq. (9)
-  // loss at the joint's value moved by ChainOptions::pinning_revolute must
-  // rise by at least pinning_mean_loss per sample, on average over the two
-  // sides within the limits; else the joint is ambiguous with the moved
-  // value as its alternative (a round link that nothing below it tells).
-  void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
-                    const std::vector<double>& q) const;
+  // The branch of records[i]'s joint at `value`: *q_other is q with the
+  // joint there, every later joint below it fitted anew (FitJoint over its
+  // range) and the subtree pass run below it; *other_records likewise.
+  Status FitBranch(const Pose& T_world_base, size_t i, double value, const std::vector<double>& q,
+                   const std::vector<JointRecord>& records, std::vector<double>* q_other,
+                   std::vector<JointRecord>* other_records);
   // Adds the children of `joint`'s body at their values in T_world_link,
   // in the body's frame: a revolute child only its round part about its
   // own axis when it has one (a flange: it is where it is whatever the

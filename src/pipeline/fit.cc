@@ -133,14 +133,14 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   // chain at once on them, and its covariance.
   ScanSet aligned_scans;
   bool align = false;
-  EDGEFIT_RETURN_IF_ERROR(AlignStationsStage(model, scans, &search, cad, options, say, result,
-                                             &aligned_scans, &align));
+  EDGEFIT_RETURN_IF_ERROR(
+      AlignStationsStage(model, scans, &search, cad, options, say, result, &aligned_scans, &align));
   const ScanSet& final_scans = align ? aligned_scans : scans;
   CorrespondenceSearch final_search(&final_scans, weights);
   WeightedIcp final_icp(&final_scans, &final_search, &edges.normals, options.residuals);
   CellMask covered;
-  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad,
-                                           options, say, result, &covered));
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad, options,
+                                           say, result, &covered));
   double moved = 0.0;  // the largest station correction, at 5 m [m]
   for (const StationCorrection& c : result->stations.stations) {
     moved = std::max(moved, c.translation + 5.0 * c.rotation);
@@ -152,11 +152,11 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
     // body alone there.
     const ScanVisibility final_visibility(&final_scans);
     const JointSweep final_sweep(&final_search.lattice(), &final_visibility);
-    const ChainFitter final_chain(model, options.chain, options.samples, cad.icp, cad.sweep,
-                                  &final_icp, &final_sweep, say);
-    EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, final_chain, final_scans, &final_search,
-                                                 weights, cad, options, say, result,
-                                                 &best.records, &covered));
+    ChainFitter final_chain(model, options.chain, options.samples, cad.icp, cad.sweep, &final_icp,
+                            &final_sweep, say);
+    EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, &final_chain, final_scans, &final_search,
+                                                 weights, cad, options, say, result, &best.records,
+                                                 &covered));
     EDGEFIT_RETURN_IF_ERROR(
         JudgeQuality(model, &final_icp, cad, best.records, resolved, options, result));
     result->timings.total = Since(start);
@@ -190,15 +190,15 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   resolved = model.ResolveDependentJoints(&refit.q);
   result->q = refit.q;
   const CoveringSummary first_coverings = result->coverings;
-  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, clean_scans, &clean_search, weights, cad,
-                                           options, say, result, &covered));
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, clean_scans, &clean_search, weights, cad, options,
+                                           say, result, &covered));
   result->coverings = first_coverings;  // the cells left out of the second pass
-  EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, clean_chain, clean_scans, &clean_search,
+  EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, &clean_chain, clean_scans, &clean_search,
                                                weights, cad, options, say, result, &refit.records,
                                                &covered));
   EDGEFIT_RETURN_IF_ERROR(
       JudgeQuality(model, &clean_icp, cad, refit.records, resolved, options, result));
-  if (covered_link) MarkBasinChanges(model, q_with_coverings, options, result);
+  if (covered_link) MarkBasinChanges(model, clean_chain, q_with_coverings, options, say, result);
   result->timings.total = Since(start);
   return Status::Ok();
 }

@@ -52,9 +52,9 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     char line[512];
     if (b.better_elsewhere) {
       std::snprintf(line, sizeof(line),
-                    "%s is in a wrong basin: at the final values of the other joints, %s = %.4f "
-                    "fits the scan better than the reported %.4f (Eq. 9 loss %.3f mm lower per "
-                    "sample)",
+                    "%s is in a wrong basin: %s = %.4f, with the joints below it fitted again "
+                    "there, fits the scan better than the reported %.4f (Eq. 9 loss %.3f mm lower "
+                    "per sample)",
                     b.link.c_str(), b.joint.c_str(), b.alternative_value,
                     result->q[static_cast<size_t>(model.JointIndex(b.joint))],
                     1e3 * b.ambiguity_margin);
@@ -79,20 +79,42 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
   return Status::Ok();
 }
 
-void MarkBasinChanges(const KinematicModel& model, const std::vector<double>& q_first,
-                      const FitOptions& options, FitResult* result) {
-  for (size_t j = 0; j < model.joints().size(); ++j) {
+void MarkBasinChanges(const KinematicModel& model, const ChainFitter& chain,
+                      const std::vector<double>& q_first, const FitOptions& options,
+                      const ProgressFn& say, FitResult* result) {
+  auto changed = [&](size_t j) {
     const Joint& joint = model.joints()[j];
-    if (!joint.IsIndependent() || joint.type == JointType::kPrismatic) continue;
-    const double change = std::abs(std::remainder(result->q[j] - q_first[j], 2.0 * M_PI));
-    if (!(change > options.refinement.coverings.basin_change)) continue;
+    return joint.IsIndependent() && joint.type != JointType::kPrismatic &&
+           std::abs(std::remainder(result->q[j] - q_first[j], 2.0 * M_PI)) >
+               options.refinement.coverings.basin_change;
+  };
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    if (!changed(j)) continue;
+    const Joint& joint = model.joints()[j];
+    bool above = false;  // a joint above it changed: compared there
+    for (int a = model.links()[static_cast<size_t>(joint.parent_link)].parent_joint; a >= 0;
+         a = model.links()[static_cast<size_t>(model.joints()[static_cast<size_t>(a)].parent_link)]
+                 .parent_joint) {
+      above = above || changed(static_cast<size_t>(a));
+    }
+    if (above) continue;
+    const double gain =
+        chain.BranchGain(result->T_world_base, result->q, q_first, joint.child_link);
+    const bool told = gain < -options.chain.ambiguity_mean_loss;
+    char line[320];
+    std::snprintf(line, sizeof(line),
+                  "coverings: %s = %.4f without them, %.4f with them; without them the first "
+                  "fits %.3f mm/sample %s%s",
+                  joint.name.c_str(), result->q[j], q_first[j], 1e3 * std::abs(gain),
+                  gain < 0.0 ? "better" : "worse", told ? "" : ": AMBIGUOUS");
+    say(line);
+    if (told) continue;
     for (BodyQuality& body : result->bodies) {
       if (body.joint != joint.name) continue;
       body.ambiguous = true;
       body.ok = false;
     }
     if (result->ok || result->message.empty()) {
-      char line[320];
       std::snprintf(line, sizeof(line),
                     "coverings (jackets, covers) hide much of the arm: %s = %.4f without them "
                     "and %.4f with them; the scan cannot tell which",

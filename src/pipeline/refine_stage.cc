@@ -46,13 +46,13 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   // the chain refined again without them.
   const CoveringOptions& coverings = options.refinement.coverings;
   for (int round = 0; refinement.refine && round < coverings.rounds; ++round) {
-    EDGEFIT_RETURN_IF_ERROR(FindCoverings(model, scans, search, chain_samples,
-                                          result->T_world_base, result->q, coverings,
-                                          refinement.icp.correspondence.use_lattice, covered,
-                                          &result->coverings));
+    EDGEFIT_RETURN_IF_ERROR(FindCoverings(
+        model, scans, search, chain_samples, result->T_world_base, result->q, coverings,
+        refinement.icp.correspondence.use_lattice, covered, &result->coverings));
     CellWeights masked(scans.scans.size());
     for (size_t s = 0; s < scans.scans.size(); ++s) {
-      masked[s] = weights != nullptr ? (*weights)[s] : std::vector<float>(scans.scans[s].size(), 1.f);
+      masked[s] =
+          weights != nullptr ? (*weights)[s] : std::vector<float>(scans.scans[s].size(), 1.f);
       for (size_t i = 0; i < masked[s].size(); ++i) {
         if ((*covered)[s][i]) masked[s][i] = 0.f;
       }
@@ -64,10 +64,9 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                   result->coverings.covered, result->coverings.matched);
     say(line);
     CorrespondenceSearch masked_search(&scans, &masked);
-    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples,
-                                        point_to_point, refinement, options.residuals,
-                                        &result->T_world_base, &result->q,
-                                        &result->chain_refinement));
+    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples, point_to_point,
+                                        refinement, options.residuals, &result->T_world_base,
+                                        &result->q, &result->chain_refinement));
   }
   result->timings.refine = Since(start);
   if (refinement.refine) {
@@ -82,37 +81,30 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   return Status::Ok();
 }
 
-Status RefineIntoBestBasins(const KinematicModel& model, const ChainFitter& chain,
-                            const ScanSet& scans, CorrespondenceSearch* search,
-                            const CellWeights* weights, const CadSamples& cad,
-                            const FitOptions& options, const ProgressFn& say, FitResult* result,
-                            std::vector<JointRecord>* records, CellMask* covered) {
+Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, const ScanSet& scans,
+                            CorrespondenceSearch* search, const CellWeights* weights,
+                            const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
+                            FitResult* result, std::vector<JointRecord>* records,
+                            CellMask* covered) {
   const auto start = std::chrono::steady_clock::now();
   const double refine_before = result->timings.refine;  // this stage's time is added to it
-  const std::vector<JointRecord> before = *records;
-  EDGEFIT_RETURN_IF_ERROR(chain.CheckFinalBasins(result->T_world_base, result->q, records));
+  bool moved = false;
+  EDGEFIT_RETURN_IF_ERROR(
+      chain->CheckFinalBasins(result->T_world_base, /*take=*/true, &result->q, records, &moved));
   char line[160];
   std::snprintf(line, sizeof(line), "final basins: every joint swept at the final values in %.2f s",
                 Since(start));
   say(line);
-  bool moved = false;
-  for (const JointRecord& record : *records) {
-    if (!record.better_elsewhere) continue;
-    result->q[static_cast<size_t>(record.joint)] = record.alternative;
-    moved = true;
+  if (moved) {
+    say("chain: refining again from the better basins");
+    const CoveringSummary coverings = result->coverings;
+    EDGEFIT_RETURN_IF_ERROR(
+        RefineWholeChain(model, scans, search, weights, cad, options, say, result, covered));
+    result->coverings = coverings;  // the verdict's: the cells left out of the first refinement
+    EDGEFIT_RETURN_IF_ERROR(
+        chain->CheckFinalBasins(result->T_world_base, /*take=*/false, &result->q, records, &moved));
   }
-  if (!moved) {
-    result->timings.refine = refine_before + Since(start);
-    return Status::Ok();
-  }
-  say("chain: refining again from the better values");
-  (void)model.ResolveDependentJoints(&result->q);
-  const CoveringSummary coverings = result->coverings;
-  EDGEFIT_RETURN_IF_ERROR(
-      RefineWholeChain(model, scans, search, weights, cad, options, say, result, covered));
-  result->coverings = coverings;  // the verdict's: the cells left out of the first refinement
-  *records = before;
-  EDGEFIT_RETURN_IF_ERROR(chain.CheckFinalBasins(result->T_world_base, result->q, records));
+  chain->CheckPinning(result->T_world_base, records, result->q);
   result->timings.refine = refine_before + Since(start);
   return Status::Ok();
 }

@@ -65,14 +65,16 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
 
 // Extension: every joint's basin checked at the final values
 // (ChainFitter::CheckFinalBasins, with `chain` on the same scans as
-// `search`); the joints with a better value elsewhere take it and the
+// `search`); the branches that fit better elsewhere are taken and the
 // whole chain is refined again from there (RefineWholeChain), then checked
-// once more: a joint still better elsewhere stays marked in *records.
-Status RefineIntoBestBasins(const KinematicModel& model, const ChainFitter& chain,
-                            const ScanSet& scans, CorrespondenceSearch* search,
-                            const CellWeights* weights, const CadSamples& cad,
-                            const FitOptions& options, const ProgressFn& say, FitResult* result,
-                            std::vector<JointRecord>* records, CellMask* covered);
+// once more: a joint still better elsewhere is marked in *records. Last,
+// whether the scan pins each revolute joint at the final values
+// (CheckPinning).
+Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, const ScanSet& scans,
+                            CorrespondenceSearch* search, const CellWeights* weights,
+                            const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
+                            FitResult* result, std::vector<JointRecord>* records,
+                            CellMask* covered);
 
 // The verdict of every jointed body alone at the final values (the base's
 // is in result->bodies already), appended to result->bodies; result->ok
@@ -92,9 +94,15 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
 
 // After the second pass (the chain fitted again without the coverings): a
 // revolute joint more than options.refinement.coverings.basin_change from
-// its value in q_first (the first pass's) is ambiguous, and the fit not ok.
-void MarkBasinChanges(const KinematicModel& model, const std::vector<double>& q_first,
-                      const FitOptions& options, FitResult* result);
+// its value in q_first (the first pass's, with the coverings), and no joint
+// above it, is a change of basin. The two are compared on the scan without
+// the coverings (`chain`'s) as branches are (ChainFitter::BranchGain):
+// unless the final values fit the bodies they place apart better by
+// options.chain.ambiguity_mean_loss per sample of the subtree, the joint is
+// ambiguous and the fit not ok.
+void MarkBasinChanges(const KinematicModel& model, const ChainFitter& chain,
+                      const std::vector<double>& q_first, const FitOptions& options,
+                      const ProgressFn& say, FitResult* result);
 
 // The quality of a body from an ICP summary at its final pose.
 BodyQuality Quality(const KinematicModel& model, const Body& body, const SurfaceSamples& samples,
