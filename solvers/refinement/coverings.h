@@ -52,8 +52,10 @@ struct CoveringOptions {
   // on the upper arm and forearm 0.58 and 0.63.
   double refit_share = 0.2;
   // A revolute joint that the fit without the coverings puts more than this
-  // away from the fit with them [rad] is ambiguous (not ok): the coverings
-  // decide between two configurations, such as a wrist flipped half a turn.
+  // away from the fit with them [rad] changed basin (a wrist flipped half a
+  // turn): the two are compared on the scan without the coverings, and
+  // unless the fit without them is clearly better the joint is ambiguous
+  // (not ok; the pipeline's MarkBasinChanges).
   double basin_change = 5.0 * M_PI / 180.0;
 
   bool IsValid(std::string* error) const;
