@@ -11,8 +11,10 @@
 //   covers), and, when a station moved or a covering hides much of a link,
 //   the chain fitted again from the base on the aligned stations without
 //   the coverings; every joint's basin checked at the final values (a joint
-//   that another value fits better takes it, and the chain is refined
-//   again); the covariance, and the verdict of each body against the scan.
+//   whose body another value fits better is fitted from there with the
+//   joints below it, the better branch taken and the chain refined again)
+//   and whether the scan pins each joint there; the covariance, and the
+//   verdict of each body against the scan.
 // A "body" is the link moved by a joint together with every link fixed to
 // it (fixed joints, attached end effectors): they move as one.
 #ifndef EDGEFIT_PIPELINE_FIT_H_
