@@ -15,11 +15,11 @@
 
 #include "edgefit/bench/fit_errors.h"
 #include "edgefit/model/composition.h"
-#include "edgefit/model/joint_values.h"
 #include "edgefit/model/surface_sampler.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/truth.h"
+#include "model/bundled_robot_test_util.h"
 #include "solvers/registration/station_alignment.h"
 
 namespace edgefit {
@@ -40,17 +40,9 @@ struct RealisticScene {
 RealisticScene* MakeScene(const std::string& sensor, bool fit) {
   {
     auto* out = new RealisticScene;
-    const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
-    AttachSpec gun;
-    CHECK(ParseAttachSpec(dir + "weld_gun.urdf@tool0", &gun).ok());
-    CHECK(
-        LoadModelWithAttachments(dir + "robot.urdf", {gun}, ModelLoadOptions(), &out->model).ok());
-    out->q = out->model.ZeroJoints();
-    CHECK(ParseJointAssignments("joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,"
-                                "joint_6=0.6,gun_joint=0.09",
-                                out->model, &out->q)
-              .ok());
-    CHECK(out->model.ResolveDependentJoints(&out->q).ok());
+    testing_util::LoadBundledRobotWithGun(
+        "joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,joint_6=0.6,gun_joint=0.09",
+        &out->model, &out->q);
     out->T_world_base = PoseFromXyzRpy({0.5, -0.2, 0.0}, {0.0, 0.0, 15.0 * kDeg});
     AssetScanOptions options;
     CHECK(ApplySensorPreset(sensor, &options).ok());

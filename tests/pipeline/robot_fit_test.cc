@@ -14,8 +14,6 @@
 #include <vector>
 
 #include "edgefit/bench/fit_errors.h"
-#include "edgefit/model/composition.h"
-#include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/pipeline/model_points.h"
@@ -26,6 +24,7 @@
 #include "edgefit/scene/accessories.h"
 #include "edgefit/scene/environment.h"
 #include "edgefit/scene/model_scene.h"
+#include "model/bundled_robot_test_util.h"
 
 namespace edgefit {
 namespace {
@@ -44,17 +43,9 @@ struct RobotScene {
 const RobotScene& GetScene() {
   static RobotScene* scene = [] {
     auto* out = new RobotScene;
-    const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
-    AttachSpec gun;
-    CHECK(ParseAttachSpec(dir + "weld_gun.urdf@tool0", &gun).ok());
-    CHECK(
-        LoadModelWithAttachments(dir + "robot.urdf", {gun}, ModelLoadOptions(), &out->model).ok());
-    out->q = out->model.ZeroJoints();
-    CHECK(ParseJointAssignments("joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,"
-                                "joint_6=0.6,gun_joint=0.09",
-                                out->model, &out->q)
-              .ok());
-    CHECK(out->model.ResolveDependentJoints(&out->q).ok());
+    testing_util::LoadBundledRobotWithGun(
+        "joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,joint_6=0.6,gun_joint=0.09",
+        &out->model, &out->q);
     out->T_world_base = PoseFromXyzRpy({0.5, -0.2, 0.0}, {0.0, 0.0, 15.0 * kDeg});
     const std::vector<Pose> T_world_link = out->model.ForwardKinematics(out->q, out->T_world_base);
     const Eigen::AlignedBox3d box = out->model.BoundingBox(out->q, out->T_world_base);

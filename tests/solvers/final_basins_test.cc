@@ -13,9 +13,8 @@
 #include <vector>
 
 #include "edgefit/edges/edge_detector.h"
-#include "edgefit/model/composition.h"
-#include "edgefit/model/joint_values.h"
 #include "edgefit/scanner/asset_scan.h"
+#include "model/bundled_robot_test_util.h"
 #include "solvers/joints/chain_fitter.h"
 #include "solvers/registration/scan_visibility.h"
 
@@ -36,17 +35,9 @@ struct GunScene {
 const GunScene& GetScene() {
   static GunScene* scene = [] {
     auto* out = new GunScene;
-    const std::string dir = std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/";
-    AttachSpec gun;
-    CHECK(ParseAttachSpec(dir + "weld_gun.urdf@tool0", &gun).ok());
-    CHECK(
-        LoadModelWithAttachments(dir + "robot.urdf", {gun}, ModelLoadOptions(), &out->model).ok());
-    out->q = out->model.ZeroJoints();
-    CHECK(ParseJointAssignments("joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,"
-                                "joint_6=0.6,gun_joint=0.04",
-                                out->model, &out->q)
-              .ok());
-    CHECK(out->model.ResolveDependentJoints(&out->q).ok());
+    testing_util::LoadBundledRobotWithGun(
+        "joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,joint_6=0.6,gun_joint=0.04",
+        &out->model, &out->q);
     out->T_world_base = PoseFromXyzRpy({0.4, -0.3, 0.0}, {0.0, 0.0, 0.5});
     AssetScanOptions options;
     options.scan.spacing = 0.004;
