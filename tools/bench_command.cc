@@ -286,26 +286,7 @@ int RunBench(const Command& command) {
   for (const std::string& asset : assets) PrintJointTable(runs, asset, false, labelled);
   std::printf("\n## Table 2: translation error per joint [mm]\n");
   for (const std::string& asset : assets) PrintJointTable(runs, asset, true, labelled);
-  std::printf(
-      "\n## Base, tool tip and time per stage\n\n| asset | posture | accessories | weights | "
-      "settings | points | base [mm] | base [deg] | in survey frame [mm, deg] | tool tip [mm] | "
-      "edges | base rough | "
-      "base precise | chain | refine | total | ok |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const Run& run : runs) {
-    const BenchResult& r = run.result;
-    std::printf(
-        "| %s | %s | %s | %s | %s | %.2f M | %.3f | %.4f | %.3f, %.4f | %.3f | %.2f s | %.2f s | "
-        "%.2f s | "
-        "%.2f s | %.2f s | %.2f s | %s |\n",
-        run.asset.c_str(), run.posture.c_str(), run.scan.accessories.c_str(),
-        run.fit.weighting.c_str(), run.label.c_str(), 1e-6 * static_cast<double>(r.points),
-        1e3 * r.errors.base_translation, r.errors.base_rotation / kDeg,
-        1e3 * r.errors.base_translation_survey, r.errors.base_rotation_survey / kDeg,
-        1e3 * r.errors.tool_tip, r.timings.edges, r.timings.base_rough, r.timings.base_precise,
-        r.timings.chain, r.timings.refine, r.timings.total,
-        r.failed ? "FAILED" : (r.ok ? "ok" : "not ok"));
-  }
+  PrintRunTable(runs);
   if (labelled || axes.repeat) PrintSummary(runs);
 
   if (!FLAGS_out_csv.empty()) {

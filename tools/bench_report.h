@@ -56,6 +56,9 @@ std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& f
 // joints, mm) for one asset: a row per run, a column per joint.
 void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, bool prismatic,
                      bool labelled);
+// A row per run: base (against the truth and in the survey's frame), tool
+// tip, time per stage, verdict.
+void PrintRunTable(const std::vector<Run>& runs);
 // Per setting: mean, p95 and max per joint kind, tool tip, failure and
 // not-ok rates, time.
 void PrintSummary(const std::vector<Run>& runs);
