@@ -95,6 +95,12 @@ struct ChainOptions {
   // mm/sample. [rad], [m]
   double final_basin_revolute = 5.0 * M_PI / 180.0;
   double final_basin_prismatic = 0.005;
+  // Rounds in which a better basin found by CheckFinalBasins is taken (and
+  // the chain refined again); a better basin found after the last is
+  // reported. One branch can uncover another: on a realistic scene a
+  // flipped wrist taken in the first round left the gun's jaw 42 mm off,
+  // which only the second round's sweep saw. 0: only report.
+  int final_basin_rounds = 2;
   // A revolute joint moved by pinning_revolute (a failed fit's bound) either
   // way must cost on average at least pinning_mean_loss per sample more
   // [m], else it is ambiguous. In 69 fits of the bundled robot the lower of

@@ -99,7 +99,7 @@ struct ChainProblem {
   ChainProblem(const KinematicModel& model, const Pose& T_world_base,
                const std::vector<double>& q_full, const ScanSet& scans, const PosedSamples& posed,
                const std::vector<Correspondence>& correspondences,
-               const std::vector<bool>& point_to_point, bool point_to_plane, size_t batch,
+               bool point_to_plane, size_t batch,
                ceres::LossFunction* loss)
       : q_independent(std::max<size_t>(model.IndependentJoints().size(), 1), 0.0),
         kinematics(&model, T_world_base, q_full, delta_base, q_independent.data()),
@@ -126,8 +126,7 @@ struct ChainProblem {
     for (const Correspondence& m : correspondences) {
       const size_t k = static_cast<size_t>(m.source);
       const int link = posed.link[k];
-      const bool plane = point_to_plane && !point_to_point[static_cast<size_t>(link)] &&
-                         posed.n_world[k].squaredNorm() > 0.0;
+      const bool plane = point_to_plane && posed.n_world[k].squaredNorm() > 0.0;
       if (link != points_link || plane != points_plane || points.size() >= batch) flush();
       points_link = link;
       points_plane = plane;
@@ -238,7 +237,7 @@ void Covariance(double cost, ChainProblem* chain, ChainRefinementSummary* summar
 
 Status RefineChain(const KinematicModel& model, const ScanSet& scans, CorrespondenceSearch* search,
                    const std::vector<SurfaceSamples>& link_samples,
-                   const std::vector<bool>& point_to_point, const ChainRefinementOptions& options,
+                   const ChainRefinementOptions& options,
                    const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q,
                    ChainRefinementSummary* summary) {
   CHECK(search != nullptr && T_world_base != nullptr && q != nullptr && summary != nullptr);
@@ -247,8 +246,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
   if (!options.IsValid(&error) || !residuals.IsValid(&error)) {
     return Status::Error("chain refinement: " + error);
   }
-  if (link_samples.size() != model.links().size() ||
-      point_to_point.size() != model.links().size() || q->size() != model.joints().size()) {
+  if (link_samples.size() != model.links().size() || q->size() != model.joints().size()) {
     return Status::Error("chain refinement: samples or joint values do not match the model");
   }
   std::vector<Eigen::AlignedBox3d> boxes_link(link_samples.size());
@@ -310,8 +308,8 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
       summary->stop_reason = IcpStopReason::kTooFewCorrespondences;
       break;
     }
-    ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, point_to_point,
-                       icp.point_to_plane, batch, loss.get());
+    ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, icp.point_to_plane,
+                       batch, loss.get());
     if (chain.has_joints()) {
       BoundJoints(model, chain.kinematics.independent_joints(), chain.q_independent.data(),
                   &chain.problem);
@@ -346,8 +344,8 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
     SelectAndPose(link_samples, model.ForwardKinematics(q_full, T_base), visibility, icp.visibility,
                   final_gate, &posed);
     search->Find(posed.q_world, crop_world, gated, &correspondences);
-    ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, point_to_point,
-                       icp.point_to_plane, batch, loss.get());
+    ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, icp.point_to_plane,
+                       batch, loss.get());
     summary->correspondences = correspondences.size();
     double cost = 0.0;
     chain.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);

@@ -52,7 +52,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   cad.icp = SampleModelSurfaces(model, sampling);
   sampling.spacing = options.samples.sweep_spacing;
   cad.sweep = SampleModelSurfaces(model, sampling);
-  cad.chain = ChainSamples(model, cad, options, &cad.chain_point_to_point);
+  cad.chain = ChainSamples(model, cad, options);
 
   // Extension: mixed pixels off the scans.
   auto stage = std::chrono::steady_clock::now();

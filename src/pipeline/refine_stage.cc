@@ -9,10 +9,8 @@
 namespace edgefit {
 
 std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadSamples& cad,
-                                         const FitOptions& options,
-                                         std::vector<bool>* point_to_point) {
+                                         const FitOptions& options) {
   std::vector<SurfaceSamples> chain_samples(model.links().size());
-  if (point_to_point != nullptr) point_to_point->assign(model.links().size(), false);
   for (size_t j = 0; j <= model.joints().size(); ++j) {
     const bool root = j == model.joints().size();
     if (!root && !model.joints()[j].IsMoving()) continue;
@@ -20,10 +18,6 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
                            : MakeBody(model, model.joints()[j].child_link, static_cast<int>(j));
     chain_samples[static_cast<size_t>(body.link)] =
         BodySamples(body, cad.icp, options.samples.max_chain_samples);
-    if (point_to_point != nullptr) {
-      (*point_to_point)[static_cast<size_t>(body.link)] =
-          !root && model.joints()[j].type == JointType::kPrismatic;
-    }
   }
   return chain_samples;
 }
@@ -37,8 +31,7 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   const ChainRefinementOptions& refinement = options.refinement.chain;
   if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
   const std::vector<SurfaceSamples>& chain_samples = cad.chain;
-  const std::vector<bool>& point_to_point = cad.chain_point_to_point;
-  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples, point_to_point,
+  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples,
                                       refinement, options.residuals, &result->T_world_base,
                                       &result->q, &result->chain_refinement));
 
@@ -64,7 +57,7 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                   result->coverings.covered, result->coverings.matched);
     say(line);
     CorrespondenceSearch masked_search(&scans, &masked);
-    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples, point_to_point,
+    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples,
                                         refinement, options.residuals, &result->T_world_base,
                                         &result->q, &result->chain_refinement));
   }
@@ -88,22 +81,22 @@ Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, con
                             CellMask* covered) {
   const auto start = std::chrono::steady_clock::now();
   const double refine_before = result->timings.refine;  // this stage's time is added to it
-  bool moved = false;
-  EDGEFIT_RETURN_IF_ERROR(
-      chain->CheckFinalBasins(result->T_world_base, /*take=*/true, &result->q, records, &moved));
-  char line[160];
-  std::snprintf(line, sizeof(line), "final basins: every joint swept at the final values in %.2f s",
-                Since(start));
-  say(line);
-  if (moved) {
+  const CoveringSummary coverings = result->coverings;
+  for (int round = 0;; ++round) {
+    const bool take = round < options.chain.final_basin_rounds;
+    bool moved = false;
+    EDGEFIT_RETURN_IF_ERROR(
+        chain->CheckFinalBasins(result->T_world_base, take, &result->q, records, &moved));
+    char line[160];
+    std::snprintf(line, sizeof(line),
+                  "final basins: every joint swept at the final values in %.2f s", Since(start));
+    say(line);
+    if (!take || !moved) break;
     say("chain: refining again from the better basins");
-    const CoveringSummary coverings = result->coverings;
     EDGEFIT_RETURN_IF_ERROR(
         RefineWholeChain(model, scans, search, weights, cad, options, say, result, covered));
-    result->coverings = coverings;  // the verdict's: the cells left out of the first refinement
-    EDGEFIT_RETURN_IF_ERROR(
-        chain->CheckFinalBasins(result->T_world_base, /*take=*/false, &result->q, records, &moved));
   }
+  result->coverings = coverings;  // the verdict's: the cells left out of the first refinement
   chain->CheckPinning(result->T_world_base, records, result->q);
   result->timings.refine = refine_before + Since(start);
   return Status::Ok();

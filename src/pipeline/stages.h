@@ -29,10 +29,9 @@ inline double Since(std::chrono::steady_clock::time_point start) {
 // The CAD samples of every link (model.links() order, link frame): dense
 // for the precise stages, sparse for the sweeps; and per body for the
 // whole-chain stages (stations, refinement, coverings), made once by
-// ChainSamples, with chain_point_to_point for its prismatic bodies.
+// ChainSamples.
 struct CadSamples {
   std::vector<SurfaceSamples> icp, sweep, chain;
-  std::vector<bool> chain_point_to_point;
 };
 
 // Sec. 5.1.1 / 6.1: the rough base poses to fit from, best first, into
@@ -46,12 +45,9 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
                       const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs);
 
 // The samples of every moving body (and the base) in its link's frame,
-// model.links() order (empty for links without a body of their own);
-// *point_to_point (may be null): per link, prismatic bodies, which keep
-// point-to-point residuals as in their joint ICP.
+// model.links() order (empty for links without a body of their own).
 std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadSamples& cad,
-                                         const FitOptions& options,
-                                         std::vector<bool>* point_to_point);
+                                         const FitOptions& options);
 
 // The whole chain refined at once (options.refinement), or its covariance
 // alone, from result->T_world_base and result->q, in place; then, for
@@ -66,8 +62,9 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
 // Extension: every joint's basin checked at the final values
 // (ChainFitter::CheckFinalBasins, with `chain` on the same scans as
 // `search`); the branches that fit better elsewhere are taken and the
-// whole chain is refined again from there (RefineWholeChain), then checked
-// once more: a joint still better elsewhere is marked in *records. Last,
+// whole chain is refined again from there (RefineWholeChain), for up to
+// ChainOptions::final_basin_rounds rounds while a round takes one; a joint
+// better elsewhere after the last is marked in *records. Last,
 // whether the scan pins each revolute joint at the final values
 // (CheckPinning).
 Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, const ScanSet& scans,

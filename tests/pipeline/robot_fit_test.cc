@@ -115,7 +115,7 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
     std::printf("  %-24s error %.4f %s\n", e.name.c_str(),
                 e.prismatic ? e.error * 1e3 : e.error / kDeg, e.prismatic ? "mm" : "deg");
     if (e.prismatic) {  // the gun's electrode: a thin rod along its own axis
-      EXPECT_LT(e.error, 0.002) << e.name;
+      EXPECT_LT(e.error, 0.0015) << e.name;
       continue;
     }
     sum += e.error;
@@ -130,9 +130,9 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
     }
     EXPECT_FALSE(b.ambiguous) << b.link;
   }
-  // Measured at 4 mm spacing: base 0.033 mm, 0.012 deg; revolute joints
-  // mean 0.0085 deg (the balancer's included), max 0.014 deg (joint_4); gun
-  // 0.59 mm. About three times that fails. The accuracy bar of BENCHMARK.md
+  // Measured at 4 mm spacing: base 0.031 mm, 0.012 deg; revolute joints
+  // mean 0.0036 deg (the balancer's included), max 0.012 deg (joint_1); gun
+  // 0.41 mm. About three times that fails (the base's bounds are older). The accuracy bar of BENCHMARK.md
   // (revolute mean 0.05 deg, p95 0.15 deg) is for its 1.7 mm scans.
   EXPECT_LT(errors.base_translation, 0.0001);
   EXPECT_LT(errors.base_rotation, 0.03 * kDeg);

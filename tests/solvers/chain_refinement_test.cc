@@ -61,14 +61,13 @@ const RobotScene& GetScene() {
 }
 
 // RefineChain on the scene from (*T_world_base, *q) with the given samples
-// (every link point-to-plane).
+// (point-to-plane).
 Status Refine(const std::vector<SurfaceSamples>& samples, const ChainRefinementOptions& options,
               Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary,
               const ResidualOptions& residuals = ResidualOptions()) {
   const RobotScene& s = GetScene();
   CorrespondenceSearch search(&s.scans, nullptr);
-  const std::vector<bool> point_to_point(samples.size(), false);
-  return RefineChain(s.model, s.scans, &search, samples, point_to_point, options, residuals,
+  return RefineChain(s.model, s.scans, &search, samples, options, residuals,
                      T_world_base, q, summary);
 }
 
