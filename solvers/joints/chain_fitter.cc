@@ -86,6 +86,20 @@ WeightedIcpOptions ForMotion(WeightedIcpOptions options, const LinkMotion& motio
   return options;
 }
 
+// The ICP of one body on its joint. A prismatic body converges with
+// point-to-point residuals (ForMotion), then settles with the stage's own
+// point-to-plane ones, which the scan's lattice does not hold.
+Status FitOnJoint(WeightedIcp* icp, const SurfaceSamples& samples, const LinkMotion& motion,
+                  const WeightedIcpOptions& options, LinkState* state,
+                  WeightedIcpSummary* summary) {
+  EDGEFIT_RETURN_IF_ERROR(icp->Fit(samples, motion, ForMotion(options, motion), state, summary));
+  if (motion.type != LinkMotion::Type::kPrismatic || !options.point_to_plane) return Status::Ok();
+  const int iterations = summary->iterations;
+  EDGEFIT_RETURN_IF_ERROR(icp->Fit(samples, motion, options, state, summary));
+  summary->iterations += iterations;
+  return Status::Ok();
+}
+
 }  // namespace
 
 ChainFitter::ChainFitter(const KinematicModel& model, const ChainOptions& options,
@@ -198,7 +212,7 @@ Status ChainFitter::RefineSubtrees(const Pose& T_world_base, size_t first, int o
     state.q = before;
     WeightedIcpSummary summary;
     EDGEFIT_RETURN_IF_ERROR(
-        icp_->Fit(subtree_icp, motion, ForMotion(options_.subtree_icp, motion), &state, &summary));
+        FitOnJoint(icp_, subtree_icp, motion, options_.subtree_icp, &state, &summary));
     (*q)[static_cast<size_t>(record.joint)] = NearestZeroTurn(motion, state.q);
     (void)model_.ResolveDependentJoints(q);
     char line[320];
@@ -302,7 +316,7 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
   state.q = record->sweep.q;
   WeightedIcpSummary summary;
   EDGEFIT_RETURN_IF_ERROR(
-      icp_->Fit(body_icp, motion, ForMotion(options_.joint_icp, motion), &state, &summary));
+      FitOnJoint(icp_, body_icp, motion, options_.joint_icp, &state, &summary));
   record->icp_iterations = summary.iterations;
   (*q)[static_cast<size_t>(record->joint)] = NearestZeroTurn(motion, state.q);
   (void)model_.ResolveDependentJoints(q);
