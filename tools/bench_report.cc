@@ -85,8 +85,6 @@ std::string StatsCells(const std::vector<double>& errors, const char* format) {
 
 }  // namespace
 
-// One row per (asset, accessories, weights, settings): the errors of all its
-// runs (postures, repeats) pooled.
 void PrintRunTable(const std::vector<Run>& runs) {
   std::printf(
       "\n## Base, tool tip and time per stage\n\n| asset | posture | accessories | weights | "
@@ -108,6 +106,8 @@ void PrintRunTable(const std::vector<Run>& runs) {
   }
 }
 
+// One row per (asset, accessories, weights, settings): the errors of all its
+// runs (postures, repeats) pooled.
 void PrintSummary(const std::vector<Run>& runs) {
   std::vector<std::string> keys;
   std::map<std::string, std::vector<const Run*>> groups;

@@ -73,27 +73,26 @@ bool AnyJointMoved(const KinematicModel& model, const std::vector<double>& befor
   return false;
 }
 
-// Prismatic joints keep point-to-point residuals: a part sliding along
-// its axis (a gun's jaw) shows few faces across the axis, and
-// point-to-plane leaves it free to slide. Only its tip and shoulder pull
-// along the axis, so it converges slowly: four times the iterations (the
-// bundled `home` posture's jaw stopped 10.9 mm off at 60, 0.9 mm at 240).
-WeightedIcpOptions ForMotion(WeightedIcpOptions options, const LinkMotion& motion) {
-  if (motion.type == LinkMotion::Type::kPrismatic) {
-    options.point_to_plane = false;
-    options.max_iterations *= 4;
-  }
-  return options;
-}
-
-// The ICP of one body on its joint. A prismatic body converges with
-// point-to-point residuals (ForMotion), then settles with the stage's own
-// point-to-plane ones, which the scan's lattice does not hold.
+// The ICP of one body on its joint, under the stage's options. A part
+// sliding along its axis (a gun's jaw) shows few faces across the axis:
+// from its sweep, point-to-plane residuals leave it free to slide, so it
+// first converges with point-to-point ones, slowly (only its tip and
+// shoulder pull along the axis): four times the iterations (the bundled
+// `home` posture's jaw stopped 10.9 mm off at 60, 0.9 mm at 240). Then it
+// settles with the stage's point-to-plane residuals: point-to-point ones
+// hold it where its samples sit best on the scan's lattice, and branches
+// compared there misjudged right jaws on 4 mm scans.
 Status FitOnJoint(WeightedIcp* icp, const SurfaceSamples& samples, const LinkMotion& motion,
                   const WeightedIcpOptions& options, LinkState* state,
                   WeightedIcpSummary* summary) {
-  EDGEFIT_RETURN_IF_ERROR(icp->Fit(samples, motion, ForMotion(options, motion), state, summary));
-  if (motion.type != LinkMotion::Type::kPrismatic || !options.point_to_plane) return Status::Ok();
+  if (motion.type != LinkMotion::Type::kPrismatic) {
+    return icp->Fit(samples, motion, options, state, summary);
+  }
+  WeightedIcpOptions converge = options;
+  converge.point_to_plane = false;
+  converge.max_iterations *= 4;
+  EDGEFIT_RETURN_IF_ERROR(icp->Fit(samples, motion, converge, state, summary));
+  if (!options.point_to_plane) return Status::Ok();
   const int iterations = summary->iterations;
   EDGEFIT_RETURN_IF_ERROR(icp->Fit(samples, motion, options, state, summary));
   summary->iterations += iterations;

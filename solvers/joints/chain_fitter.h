@@ -86,11 +86,10 @@ struct ChainOptions {
   // (and better by ambiguity_mean_loss per sample) is another basin, and
   // followed as a branch. The jaw's is below the sweep's distinct_prismatic
   // (20 mm): jaws 8-9 mm off, in the bench's realistic scenes, were
-  // reported ok; not below 5 mm: at 2 mm the branches moved the jaw of a
-  // realistic 1.7 mm scene from 3.8 to 1.2 mm off, but on an ideal 4 mm
-  // scan from 6.0 to 9.9 mm off (the Eq. 9 loss of a rod sliding along
-  // itself is biased at coarse spacing: that branch fitted 0.12 mm/sample
-  // better). Revolute joints keep the sweep's 5 deg: at 1 deg a jacketed
+  // reported ok; not below 5 mm: at 2 mm, tried while the jaw's ICP and
+  // refinement still ended with point-to-point residuals, the branches
+  // moved the jaw of a realistic 1.7 mm scene from 3.8 to 1.2 mm off but on
+  // an ideal 4 mm scan from 6.0 to 9.9 mm off (not tried since). Revolute joints keep the sweep's 5 deg: at 1 deg a jacketed
   // forearm's sweep preferred 1.7 deg off the right value by 0.09
   // mm/sample. [rad], [m]
   double final_basin_revolute = 5.0 * M_PI / 180.0;

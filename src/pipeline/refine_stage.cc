@@ -84,12 +84,14 @@ Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, con
   const CoveringSummary coverings = result->coverings;
   for (int round = 0;; ++round) {
     const bool take = round < options.chain.final_basin_rounds;
+    const auto round_start = std::chrono::steady_clock::now();
     bool moved = false;
     EDGEFIT_RETURN_IF_ERROR(
         chain->CheckFinalBasins(result->T_world_base, take, &result->q, records, &moved));
     char line[160];
     std::snprintf(line, sizeof(line),
-                  "final basins: every joint swept at the final values in %.2f s", Since(start));
+                  "final basins: every joint swept at the final values in %.2f s",
+                  Since(round_start));
     say(line);
     if (!take || !moved) break;
     say("chain: refining again from the better basins");

@@ -132,8 +132,9 @@ TEST(RobotFitTest, RecoversBaseAndJointsWithAccessories) {
   }
   // Measured at 4 mm spacing: base 0.031 mm, 0.012 deg; revolute joints
   // mean 0.0036 deg (the balancer's included), max 0.012 deg (joint_1); gun
-  // 0.41 mm. About three times that fails (the base's bounds are older). The accuracy bar of BENCHMARK.md
-  // (revolute mean 0.05 deg, p95 0.15 deg) is for its 1.7 mm scans.
+  // 0.41 mm. About three times that fails (the base's bounds are older).
+  // The accuracy bar of BENCHMARK.md (revolute mean 0.05 deg, p95 0.15 deg)
+  // is for its 1.7 mm scans.
   EXPECT_LT(errors.base_translation, 0.0001);
   EXPECT_LT(errors.base_rotation, 0.03 * kDeg);
   EXPECT_LT(sum / revolute, 0.025 * kDeg);
