@@ -56,13 +56,14 @@ Status ChainFitter::FitBranch(const Pose& T_world_base, size_t i, double value,
 }
 
 double ChainFitter::BranchGain(const Pose& T_world_base, const std::vector<double>& q,
-                               const std::vector<double>& q_other, int link) const {
+                               const std::vector<double>& q_other, int link,
+                               const JointSweep* sweep) const {
   const std::vector<bool> below = SubtreeMask(link);
   size_t samples = 0, placed_apart_samples = 0;  // the subtree's, the scored bodies'
   for (size_t l = 0; l < below.size(); ++l) samples += below[l] ? sweep_samples_[l].size() : 0;
   const std::vector<bool> apart = PlacedApart(T_world_base, q, q_other, below);
-  const double loss = LinksLoss(T_world_base, q, apart, &placed_apart_samples);
-  const double other_loss = LinksLoss(T_world_base, q_other, apart, &placed_apart_samples);
+  const double loss = LinksLoss(T_world_base, q, apart, &placed_apart_samples, sweep);
+  const double other_loss = LinksLoss(T_world_base, q_other, apart, &placed_apart_samples, sweep);
   return (loss - other_loss) / static_cast<double>(std::max<size_t>(samples, 1));
 }
 
@@ -87,6 +88,13 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     const double gain = BranchGain(T_world_base, *q, q_other, j.child_link);
     const bool take_other = gain > 0.0;
     const double alternative = take_other ? (*q)[jj] : q_other[jj];
+    // How much better the chosen value fits the scan with its coverings.
+    double covered_margin = 0.0;
+    if (std::abs(gain) < options_.ambiguity_mean_loss && covered_scan_ != nullptr) {
+      const double covered_gain =
+          BranchGain(T_world_base, *q, q_other, j.child_link, covered_scan_);
+      covered_margin = take_other ? covered_gain : -covered_gain;
+    }
     if (take_other) {
       *switched = true;
       *q = std::move(q_other);
@@ -95,11 +103,17 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     JointRecord& checked = (*records)[i];
     checked.alternative = alternative;
     checked.margin = std::abs(gain);
-    checked.ambiguous = checked.margin < options_.ambiguity_mean_loss;
-    char line[320];
+    const bool told_by_coverings = covered_margin > options_.ambiguity_mean_loss;
+    checked.ambiguous = checked.margin < options_.ambiguity_mean_loss && !told_by_coverings;
+    char told[96] = "";
+    if (told_by_coverings) {
+      std::snprintf(told, sizeof(told), " (with the coverings %.3f mm/sample worse)",
+                    1e3 * covered_margin);
+    }
+    char line[400];
     std::snprintf(
-        line, sizeof(line), "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s",
-        j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin,
+        line, sizeof(line), "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s%s",
+        j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin, told,
         take_other ? " (the first fit's value)" : "", checked.ambiguous ? ": AMBIGUOUS" : "");
     say_(line);
   }

@@ -335,14 +335,16 @@ double ChainFitter::SubtreeLoss(const Pose& T_world_base, const std::vector<doub
 }
 
 double ChainFitter::LinksLoss(const Pose& T_world_base, const std::vector<double>& q,
-                              const std::vector<bool>& in, size_t* samples) const {
+                              const std::vector<bool>& in, size_t* samples,
+                              const JointSweep* sweep) const {
+  if (sweep == nullptr) sweep = sweep_;
   const std::vector<Pose> T_world_link = model_.ForwardKinematics(q, T_world_base);
   double loss = 0.0;
   *samples = 0;
   for (size_t l = 0; l < in.size(); ++l) {
     const SurfaceSamples& s = sweep_samples_[l];
     if (!in[l] || s.points.empty()) continue;
-    loss += sweep_->LossAt(s, T_world_link[l], options_.sweep);
+    loss += sweep->LossAt(s, T_world_link[l], options_.sweep);
     *samples += s.size();
   }
   return loss;

@@ -185,18 +185,32 @@ class ChainFitter {
   // called ambiguous.
   void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
                     const std::vector<double>& q) const;
+  // The scan with its coverings (jackets, covers; borrowed, may be null),
+  // for a fitter whose own scan has them removed: a covering hides its
+  // link's surface but keeps the link's shape a few millimetres out, which
+  // the Eq. (9) loss (tau_dist 1 cm) still reads. CheckAlternatives does
+  // not call a joint ambiguous when this scan prefers the chosen value by
+  // more than ambiguity_mean_loss per sample (a jacketed forearm: its
+  // drive cover under the jacket tells a flipped wrist).
+  void set_covered_scan(const JointSweep* sweep) { covered_scan_ = sweep; }
+  const JointSweep* covered_scan() const { return covered_scan_; }
+
   // How much better q_other fits than q the bodies below `link` that the
   // two place apart (PlacedApart): their Eq. (9) loss difference per
-  // sample of the whole subtree [m]; negative when q fits better.
+  // sample of the whole subtree [m]; negative when q fits better. Scored
+  // on `sweep`'s scan (nullptr: the fitter's).
   double BranchGain(const Pose& T_world_base, const std::vector<double>& q,
-                    const std::vector<double>& q_other, int link) const;
+                    const std::vector<double>& q_other, int link,
+                    const JointSweep* sweep = nullptr) const;
   // The Eq. (9) loss of every link at or below `link` at joint values q;
   // *samples counts the sweep samples scored.
   double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,
                      size_t* samples) const;
-  // The same over the links with in[l] set only.
+  // The same over the links with in[l] set only, on `sweep`'s scan
+  // (nullptr: the fitter's).
   double LinksLoss(const Pose& T_world_base, const std::vector<double>& q,
-                   const std::vector<bool>& in, size_t* samples) const;
+                   const std::vector<bool>& in, size_t* samples,
+                   const JointSweep* sweep = nullptr) const;
 
  private:
   // The chain pass: per joint the Eq. (9) sweep and the joint ICP; a
@@ -265,6 +279,7 @@ class ChainFitter {
   const std::vector<SurfaceSamples>& sweep_samples_;
   WeightedIcp* icp_;
   const JointSweep* sweep_;
+  const JointSweep* covered_scan_ = nullptr;
   std::function<void(const std::string&)> say_;
 };
 

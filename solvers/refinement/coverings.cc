@@ -1,9 +1,54 @@
 #include "solvers/refinement/coverings.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
 namespace edgefit {
+
+namespace {
+
+// The cells of `scan` no sample matched (owner -1) take the verdict of the
+// nearest matched cell within `window` lattice cells and `gate` metres,
+// counted in *summary under that cell's link.
+void SpreadVerdicts(const OrganizedScan& scan, const std::vector<int>& owner, int window,
+                    double gate, std::vector<uint8_t>* covered, CoveringSummary* summary) {
+  const int rows = scan.rows(), cols = scan.cols();
+  std::vector<int> from(scan.size(), -1);
+  std::vector<int> from_distance(scan.size(), std::numeric_limits<int>::max());
+  for (int c = 0; c < cols; ++c) {
+    for (int r = 0; r < rows; ++r) {
+      const size_t cell = scan.Index(r, c);
+      if (owner[cell] < 0) continue;
+      const Eigen::Vector3d p = scan.PointWorld(cell);
+      for (int cc = std::max(0, c - window); cc <= std::min(cols - 1, c + window); ++cc) {
+        for (int rr = std::max(0, r - window); rr <= std::min(rows - 1, r + window); ++rr) {
+          const size_t other = scan.Index(rr, cc);
+          const int d = (cc - c) * (cc - c) + (rr - r) * (rr - r);
+          if (owner[other] >= 0 || !scan.IsValid(other) || d >= from_distance[other] ||
+              (scan.PointWorld(other) - p).squaredNorm() > gate * gate) {
+            continue;
+          }
+          from_distance[other] = d;
+          from[other] = static_cast<int>(cell);
+        }
+      }
+    }
+  }
+  for (size_t cell = 0; cell < scan.size(); ++cell) {
+    if (from[cell] < 0) continue;
+    const size_t judged = static_cast<size_t>(from[cell]);
+    const size_t link = static_cast<size_t>(owner[judged]);
+    ++summary->matched;
+    ++summary->link_matched[link];
+    if (!(*covered)[judged]) continue;
+    (*covered)[cell] = 1;
+    ++summary->covered;
+    ++summary->link_covered[link];
+  }
+}
+
+}  // namespace
 
 bool CoveringOptions::IsValid(std::string* error) const {
   if (rounds < 0 || window < 0 || window > 20) {
@@ -52,7 +97,7 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
   CorrespondenceOptions correspondence;
   correspondence.max_distance = options.gate;
   correspondence.use_lattice = use_lattice;
-  std::vector<Correspondence> matches;
+  std::vector<Correspondence> matches, per_scan;
   for (size_t l = 0; l < link_samples.size(); ++l) {
     const SurfaceSamples& samples = link_samples[l];
     if (samples.points.empty()) continue;
@@ -65,7 +110,28 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
     }
     crop.min().array() -= options.gate;
     crop.max().array() += options.gate;
-    search->Find(q_world, crop, correspondence, &matches);
+    // The lattice: the nearest cell in every scan, so that each scanner's
+    // view of a covering is judged (the nearest over all scans would leave
+    // the farther views of a thick jacket unjudged); the kd-tree: the
+    // nearest over all scans.
+    matches.clear();
+    if (use_lattice) {
+      const float max_d2 = static_cast<float>(options.gate * options.gate);
+      for (size_t s = 0; s < n_scans; ++s) {
+        per_scan.assign(q_world.size(), Correspondence());
+#pragma omp parallel for schedule(dynamic, 512)
+        for (int64_t i = 0; i < static_cast<int64_t>(q_world.size()); ++i) {
+          per_scan[static_cast<size_t>(i)] = search->lattice().NearestIn(
+              static_cast<int>(s), q_world[static_cast<size_t>(i)], correspondence.window, max_d2);
+          per_scan[static_cast<size_t>(i)].source = static_cast<int>(i);
+        }
+        for (const Correspondence& c : per_scan) {
+          if (c.scan >= 0) matches.push_back(c);
+        }
+      }
+    } else {
+      search->Find(q_world, crop, correspondence, &matches);
+    }
     for (const Correspondence& c : matches) {
       const OrganizedScan& scan = scans.scans[static_cast<size_t>(c.scan)];
       const Eigen::Vector3d q_i = q_world[static_cast<size_t>(c.source)].cast<double>();
@@ -114,6 +180,7 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
         ++summary->link_covered[link];
       }
     }
+    if (w > 0) SpreadVerdicts(scan, owner[s], w, options.gate, &(*covered)[s], summary);
   }
   return Status::Ok();
 }

@@ -8,12 +8,20 @@
 // consistently over an area:
 //
 //   - every visible CAD sample of every link (front-facing to the scanner of
-//     its match) is matched to its nearest scan cell within `gate`; each
-//     cell keeps the signed distance s = n . (p - q) along the CAD normal
-//     of its closest sample (positive: outside the surface);
-//   - a cell is a covering when the median of s over the matched cells of
-//     its (2 window + 1)^2 lattice block exceeds area_offset, or its own s
-//     exceeds point_offset.
+//     its match) is matched to its nearest cell within `gate` in each scan
+//     (with the lattice; the kd-tree: over all scans); each cell keeps the
+//     signed distance s = n . (p - q) along the CAD normal of its closest
+//     sample (positive: outside the surface);
+//   - a matched cell is a covering when the median of s over the matched
+//     cells of its (2 window + 1)^2 lattice block exceeds area_offset, or
+//     its own s exceeds point_offset;
+//   - a cell no sample matched (the samples are sparser than the scan)
+//     takes the verdict of the nearest matched cell in its block within
+//     `gate` of it, so that a fit whose samples move finds no unmarked
+//     covering next to a marked one.
+// On a 3 mm scan of the bundled robot with jackets, at the true pose
+// (tests/solvers/coverings_test.cc): recall 0.934 of the jacket cells,
+// 0.316 when only the nearest cell over all scans was judged.
 //
 // The whole-chain refinement then gives those cells weight 0 and runs
 // again; `rounds` times, each from the last estimate, so a covering the

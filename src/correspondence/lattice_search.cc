@@ -26,12 +26,17 @@ LatticeSearch::LatticeSearch(const ScanSet* scans, const CellWeights* weights)
 
 Correspondence LatticeSearch::Nearest(const Eigen::Vector3f& q_world, int window,
                                       float max_d2) const {
+  return NearestIn(-1, q_world, window, max_d2);
+}
+
+Correspondence LatticeSearch::NearestIn(int only_scan, const Eigen::Vector3f& q_world, int window,
+                                        float max_d2) const {
   const Eigen::Vector4d q_h(q_world.x(), q_world.y(), q_world.z(), 1.0);
   float best_d2 = std::numeric_limits<float>::infinity();
   int best_scan = -1, best_cell = -1;
   const std::vector<OrganizedScan>& scans = scans_->scans;
   for (size_t s = 0; s < scans.size(); ++s) {
-    if (!searchable_[s]) continue;
+    if (!searchable_[s] || (only_scan >= 0 && static_cast<int>(s) != only_scan)) continue;
     const OrganizedScan& scan = scans[s];
     const Eigen::Vector3d q_scanner = T_scanner_world_[s] * q_h;
     int row, col;

@@ -147,11 +147,11 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   }
   const bool stations_moved = moved > options.stations.refit_correction;
   const bool covered_link = CoveringsHideALink(result->coverings, options.refinement.coverings);
+  const ScanVisibility final_visibility(&final_scans);
+  const JointSweep final_sweep(&final_search.lattice(), &final_visibility);
   if (!stations_moved && !covered_link) {
     // Every joint's basin at the final values, then the verdict of every
     // body alone there.
-    const ScanVisibility final_visibility(&final_scans);
-    const JointSweep final_sweep(&final_search.lattice(), &final_visibility);
     ChainFitter final_chain(model, options.chain, options.samples, cad.icp, cad.sweep, &final_icp,
                             &final_sweep, say);
     EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, &final_chain, final_scans, &final_search,
@@ -182,6 +182,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   const JointSweep clean_sweep(&clean_search.lattice(), &clean_visibility);
   ChainFitter clean_chain(model, options.chain, options.samples, cad.icp, cad.sweep, &clean_icp,
                           &clean_sweep, say);
+  clean_chain.set_covered_scan(&final_sweep);
   const std::vector<double> q_with_coverings = result->q;
   Attempt refit;
   EDGEFIT_RETURN_IF_ERROR(fit_from(result->T_world_base, &clean_icp, &clean_chain, &refit));

@@ -98,15 +98,26 @@ void MarkBasinChanges(const KinematicModel& model, const ChainFitter& chain,
       above = above || changed(static_cast<size_t>(a));
     }
     if (above) continue;
+    // Scored on the scan without the coverings and on the scan with them
+    // (their shape still tells a wrist's cover): the value without them is
+    // told when either prefers it.
     const double gain =
         chain.BranchGain(result->T_world_base, result->q, q_first, joint.child_link);
-    const bool told = gain < -options.chain.ambiguity_mean_loss;
-    char line[320];
+    const double covered_gain =
+        chain.covered_scan() == nullptr
+            ? 0.0
+            : chain.BranchGain(result->T_world_base, result->q, q_first, joint.child_link,
+                               chain.covered_scan());
+    const double margin = options.chain.ambiguity_mean_loss;
+    const bool told = gain < -margin || covered_gain < -margin;
+    char line[400];
     std::snprintf(line, sizeof(line),
-                  "coverings: %s = %.4f without them, %.4f with them; without them the first "
-                  "fits %.3f mm/sample %s%s",
+                  "coverings: %s = %.4f without them, %.4f with them; the first fits %.3f "
+                  "mm/sample %s on the scan without them, %.3f mm/sample %s on the scan with "
+                  "them%s",
                   joint.name.c_str(), result->q[j], q_first[j], 1e3 * std::abs(gain),
-                  gain < 0.0 ? "better" : "worse", told ? "" : ": AMBIGUOUS");
+                  gain < 0.0 ? "better" : "worse", 1e3 * std::abs(covered_gain),
+                  covered_gain < 0.0 ? "better" : "worse", told ? "" : ": AMBIGUOUS");
     say(line);
     if (told) continue;
     for (BodyQuality& body : result->bodies) {

@@ -45,6 +45,9 @@ class LatticeSearch {
   // One query: its nearest cell within `window`, gated by max_d2 = squared
   // max_distance [m^2] (scan = -1 beyond; source left 0). Thread-safe.
   Correspondence Nearest(const Eigen::Vector3f& q_world, int window, float max_d2) const;
+  // The same within scan `only_scan` alone (-1: every scan, as Nearest).
+  Correspondence NearestIn(int only_scan, const Eigen::Vector3f& q_world, int window,
+                           float max_d2) const;
 
  private:
   const ScanSet* scans_;
