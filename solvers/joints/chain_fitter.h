@@ -191,7 +191,8 @@ class ChainFitter {
   // the Eq. (9) loss (tau_dist 1 cm) still reads. CheckAlternatives does
   // not call a joint ambiguous when this scan prefers the chosen value by
   // more than ambiguity_mean_loss per sample (a jacketed forearm: its
-  // drive cover under the jacket tells a flipped wrist).
+  // drive cover under the jacket tells a flipped wrist); the pipeline's
+  // comparison of the passes with and without the coverings reads it too.
   void set_covered_scan(const JointSweep* sweep) { covered_scan_ = sweep; }
   const JointSweep* covered_scan() const { return covered_scan_; }
 
