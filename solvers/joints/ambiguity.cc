@@ -67,6 +67,12 @@ double ChainFitter::BranchGain(const Pose& T_world_base, const std::vector<doubl
   return (loss - other_loss) / static_cast<double>(std::max<size_t>(samples, 1));
 }
 
+double ChainFitter::CoveredMargin(const Pose& T_world_base, const std::vector<double>& q,
+                                  const std::vector<double>& q_other, int link) const {
+  if (covered_scan_ == nullptr) return 0.0;
+  return -BranchGain(T_world_base, q, q_other, link, covered_scan_);
+}
+
 Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<JointRecord>* records,
                                       std::vector<double>* q, bool* switched) {
   *switched = false;
@@ -88,13 +94,10 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     const double gain = BranchGain(T_world_base, *q, q_other, j.child_link);
     const bool take_other = gain > 0.0;
     const double alternative = take_other ? (*q)[jj] : q_other[jj];
-    // How much better the chosen value fits the scan with its coverings.
-    double covered_margin = 0.0;
-    if (std::abs(gain) < options_.ambiguity_mean_loss && covered_scan_ != nullptr) {
-      const double covered_gain =
-          BranchGain(T_world_base, *q, q_other, j.child_link, covered_scan_);
-      covered_margin = take_other ? covered_gain : -covered_gain;
-    }
+    const double covered_margin =
+        std::abs(gain) >= options_.ambiguity_mean_loss ? 0.0
+        : take_other ? CoveredMargin(T_world_base, q_other, *q, j.child_link)
+                     : CoveredMargin(T_world_base, *q, q_other, j.child_link);
     if (take_other) {
       *switched = true;
       *q = std::move(q_other);

@@ -89,8 +89,8 @@ struct ChainOptions {
   // reported ok; not below 5 mm: at 2 mm, tried while the jaw's ICP and
   // refinement still ended with point-to-point residuals, the branches
   // moved the jaw of a realistic 1.7 mm scene from 3.8 to 1.2 mm off but on
-  // an ideal 4 mm scan from 6.0 to 9.9 mm off (not tried since). Revolute joints keep the sweep's 5 deg: at 1 deg a jacketed
-  // forearm's sweep preferred 1.7 deg off the right value by 0.09
+  // an ideal 4 mm scan from 6.0 to 9.9 mm off (not tried since). Revolute
+  // joints keep the sweep's 5 deg: at 1 deg a jacketed forearm's sweep preferred 1.7 deg off the right value by 0.09
   // mm/sample. [rad], [m]
   double final_basin_revolute = 5.0 * M_PI / 180.0;
   double final_basin_prismatic = 0.005;
@@ -188,13 +188,16 @@ class ChainFitter {
   // The scan with its coverings (jackets, covers; borrowed, may be null),
   // for a fitter whose own scan has them removed: a covering hides its
   // link's surface but keeps the link's shape a few millimetres out, which
-  // the Eq. (9) loss (tau_dist 1 cm) still reads. CheckAlternatives does
-  // not call a joint ambiguous when this scan prefers the chosen value by
-  // more than ambiguity_mean_loss per sample (a jacketed forearm: its
-  // drive cover under the jacket tells a flipped wrist); the pipeline's
-  // comparison of the passes with and without the coverings reads it too.
+  // the Eq. (9) loss (tau_dist 1 cm) still reads (a jacketed forearm: its
+  // drive cover under the jacket tells a flipped wrist).
   void set_covered_scan(const JointSweep* sweep) { covered_scan_ = sweep; }
-  const JointSweep* covered_scan() const { return covered_scan_; }
+  // How much better q fits than q_other on the scan with the coverings
+  // (BranchGain's scoring; 0 without that scan) [m per sample]: a pair the
+  // fitter's own scan cannot tell apart is told when this exceeds
+  // ambiguity_mean_loss (CheckAlternatives, and the pipeline's comparison
+  // of its passes with and without the coverings).
+  double CoveredMargin(const Pose& T_world_base, const std::vector<double>& q,
+                       const std::vector<double>& q_other, int link) const;
 
   // How much better q_other fits than q the bodies below `link` that the
   // two place apart (PlacedApart): their Eq. (9) loss difference per

@@ -10,7 +10,8 @@ namespace {
 
 // The cells of `scan` no sample matched (owner -1) take the verdict of the
 // nearest matched cell within `window` lattice cells and `gate` metres,
-// counted in *summary under that cell's link.
+// counted in *summary under that cell's link. Distances in the scanner's
+// frame (rigid: the same as in the world's, without a transform per pair).
 void SpreadVerdicts(const OrganizedScan& scan, const std::vector<int>& owner, int window,
                     double gate, std::vector<uint8_t>* covered, CoveringSummary* summary) {
   const int rows = scan.rows(), cols = scan.cols();
@@ -20,13 +21,13 @@ void SpreadVerdicts(const OrganizedScan& scan, const std::vector<int>& owner, in
     for (int r = 0; r < rows; ++r) {
       const size_t cell = scan.Index(r, c);
       if (owner[cell] < 0) continue;
-      const Eigen::Vector3d p = scan.PointWorld(cell);
+      const Eigen::Vector3d p = scan.point_scanner(cell).cast<double>();
       for (int cc = std::max(0, c - window); cc <= std::min(cols - 1, c + window); ++cc) {
         for (int rr = std::max(0, r - window); rr <= std::min(rows - 1, r + window); ++rr) {
           const size_t other = scan.Index(rr, cc);
           const int d = (cc - c) * (cc - c) + (rr - r) * (rr - r);
           if (owner[other] >= 0 || !scan.IsValid(other) || d >= from_distance[other] ||
-              (scan.PointWorld(other) - p).squaredNorm() > gate * gate) {
+              (scan.point_scanner(other).cast<double>() - p).squaredNorm() > gate * gate) {
             continue;
           }
           from_distance[other] = d;
@@ -103,13 +104,9 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
     if (samples.points.empty()) continue;
     const Pose& T = T_world_link[l];
     std::vector<Eigen::Vector3f> q_world(samples.size());
-    Eigen::AlignedBox3d crop;
     for (size_t i = 0; i < samples.size(); ++i) {
       q_world[i] = (T * samples.points[i].cast<double>()).cast<float>();
-      crop.extend(q_world[i].cast<double>());
     }
-    crop.min().array() -= options.gate;
-    crop.max().array() += options.gate;
     // The lattice: the nearest cell in every scan, so that each scanner's
     // view of a covering is judged (the nearest over all scans would leave
     // the farther views of a thick jacket unjudged); the kd-tree: the
@@ -130,6 +127,10 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
         }
       }
     } else {
+      Eigen::AlignedBox3d crop;
+      for (const Eigen::Vector3f& x : q_world) crop.extend(x.cast<double>());
+      crop.min().array() -= options.gate;
+      crop.max().array() += options.gate;
       search->Find(q_world, crop, correspondence, &matches);
     }
     for (const Correspondence& c : matches) {

@@ -104,10 +104,7 @@ void MarkBasinChanges(const KinematicModel& model, const ChainFitter& chain,
     const double gain =
         chain.BranchGain(result->T_world_base, result->q, q_first, joint.child_link);
     const double covered_gain =
-        chain.covered_scan() == nullptr
-            ? 0.0
-            : chain.BranchGain(result->T_world_base, result->q, q_first, joint.child_link,
-                               chain.covered_scan());
+        -chain.CoveredMargin(result->T_world_base, result->q, q_first, joint.child_link);
     const double margin = options.chain.ambiguity_mean_loss;
     const bool told = gain < -margin || covered_gain < -margin;
     char line[400];
