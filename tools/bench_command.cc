@@ -372,6 +372,7 @@ Command BenchCommand() {
        "threads",
        "sensors",
        "align_stations",
+       "station_rounds",
        "covering_rounds",
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",

@@ -251,6 +251,7 @@ Command FitCommand() {
        "parameterization",
        "refine_chain",
        "align_stations",
+       "station_rounds",
        "covering_rounds",
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",

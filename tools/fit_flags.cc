@@ -22,6 +22,10 @@ DEFINE_bool(refine_chain, true,
 DEFINE_bool(align_stations, true,
             "Register each station to the fitted model and fit again when one moved (their "
             "registration residuals); --noalign_stations: use the written station poses.");
+DEFINE_int32(station_rounds, 3,
+             "Registrations of the stations: after the first (at the sequential fit), the chain "
+             "is refined on the corrected stations and they are registered again there, until "
+             "their corrections settle or this many were made; 1: once.");
 DEFINE_int32(covering_rounds, 2,
              "Rounds of the whole-chain refinement without the coverings found at the last "
              "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
@@ -51,6 +55,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
       ParseJointParameterization(FLAGS_parameterization, &options->residuals.parameterization));
   options->refinement.chain.refine = FLAGS_refine_chain;
   options->stations.align = FLAGS_align_stations;
+  options->stations.rounds = FLAGS_station_rounds;
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;

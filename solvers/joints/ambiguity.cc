@@ -94,10 +94,11 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     const double gain = BranchGain(T_world_base, *q, q_other, j.child_link);
     const bool take_other = gain > 0.0;
     const double alternative = take_other ? (*q)[jj] : q_other[jj];
-    const double covered_margin =
-        std::abs(gain) >= options_.ambiguity_mean_loss ? 0.0
-        : take_other ? CoveredMargin(T_world_base, q_other, *q, j.child_link)
-                     : CoveredMargin(T_world_base, *q, q_other, j.child_link);
+    // The same pair on the scan with the coverings: how much better the
+    // value taken fits there (negative: the other fits better).
+    const double covered_margin = take_other
+                                      ? CoveredMargin(T_world_base, q_other, *q, j.child_link)
+                                      : CoveredMargin(T_world_base, *q, q_other, j.child_link);
     if (take_other) {
       *switched = true;
       *q = std::move(q_other);
@@ -106,12 +107,19 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     JointRecord& checked = (*records)[i];
     checked.alternative = alternative;
     checked.margin = std::abs(gain);
-    const bool told_by_coverings = covered_margin > options_.ambiguity_mean_loss;
-    checked.ambiguous = checked.margin < options_.ambiguity_mean_loss && !told_by_coverings;
+    // A close pair is told by the scan with the coverings; a pair the two
+    // scans decide each their own way is decided by the coverings, which
+    // were found at the first estimate and can hide the other value's
+    // surfaces (a jaw slid along itself: the part of it beyond the jaw's
+    // end there lies off the CAD): ambiguous.
+    const double bound = options_.ambiguity_mean_loss;
+    const bool told_by_coverings = checked.margin < bound && covered_margin > bound;
+    const bool coverings_decide = covered_margin < -bound;
+    checked.ambiguous = (checked.margin < bound && !told_by_coverings) || coverings_decide;
     char told[96] = "";
-    if (told_by_coverings) {
-      std::snprintf(told, sizeof(told), " (with the coverings %.3f mm/sample worse)",
-                    1e3 * covered_margin);
+    if (told_by_coverings || coverings_decide) {
+      std::snprintf(told, sizeof(told), " (with the coverings %.3f mm/sample %s)",
+                    1e3 * std::abs(covered_margin), covered_margin > 0.0 ? "worse" : "better");
     }
     char line[400];
     std::snprintf(
@@ -169,7 +177,15 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
     if (take) {
       // The branch's joints were fitted anew: what the earlier checks said
       // of their old values no longer holds (CheckPinning again after the
-      // refinement).
+      // refinement), except an alternative of this joint that is another
+      // basin from the new value as well.
+      const double distinct =
+          prismatic ? options_.sweep.distinct_prismatic : options_.sweep.distinct_revolute;
+      const double apart = prismatic ? std::abs(record.alternative - q_other[jj])
+                                     : std::abs(std::remainder(record.alternative - q_other[jj],
+                                                               2.0 * M_PI));
+      const bool keep = record.ambiguous && apart >= 0.5 * distinct;
+      const JointRecord kept = record;
       const std::vector<bool> below = SubtreeMask(j.child_link);
       for (JointRecord& r : other_records) {
         if (!below[static_cast<size_t>(model_.joints()[static_cast<size_t>(r.joint)].child_link)])
@@ -177,6 +193,11 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
         r.ambiguous = r.better_elsewhere = false;
         r.alternative = 0.0;
         r.margin = std::numeric_limits<double>::infinity();
+        if (keep && r.joint == kept.joint) {
+          r.ambiguous = true;
+          r.alternative = kept.alternative;
+          r.margin = kept.margin;
+        }
       }
       *q = std::move(q_other);
       *records = std::move(other_records);

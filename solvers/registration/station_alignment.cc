@@ -2,9 +2,11 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "edgefit/correspondence/lattice_search.h"
 
@@ -38,6 +40,8 @@ bool StationAlignmentOptions::IsValid(std::string* error) const {
     *error = "station alignment: huber_scale and iterations must be positive";
   } else if (!(prior_translation > 0.0 && prior_rotation > 0.0 && point_sigma > 0.0)) {
     *error = "station alignment: the prior's sigmas must be positive";
+  } else if (rounds < 1) {
+    *error = "station alignment: need rounds >= 1";
   } else {
     return true;
   }
@@ -162,6 +166,31 @@ Status AlignStationsToModel(const KinematicModel& model,
   summary->seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
+}
+
+double LargestCorrection(const StationAlignmentSummary& summary) {
+  double largest = 0.0;
+  for (const StationCorrection& c : summary.stations) {
+    largest = std::max(largest, c.translation + 5.0 * c.rotation);
+  }
+  return largest;
+}
+
+double LargestChange(const StationAlignmentSummary& before, const StationAlignmentSummary& after,
+                     const ScanSet& written) {
+  if (before.stations.size() != after.stations.size() ||
+      before.stations.size() != written.scans.size()) {
+    return std::numeric_limits<double>::infinity();
+  }
+  double largest = 0.0;
+  for (size_t s = 0; s < written.scans.size(); ++s) {
+    const Pose& a = before.stations[s].correction;
+    const Pose& b = after.stations[s].correction;
+    const Eigen::Vector3d origin = written.scans[s].T_world_scanner().translation();
+    const double angle = Eigen::AngleAxisd(b.linear() * a.linear().transpose()).angle();
+    largest = std::max(largest, (b * origin - a * origin).norm() + 5.0 * angle);
+  }
+  return largest;
 }
 
 std::string StationAlignmentLine(const StationAlignmentSummary& summary) {

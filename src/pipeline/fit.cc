@@ -9,6 +9,7 @@
 
 #include "edgefit/correspondence/correspondence_search.h"
 #include "solvers/registration/scan_visibility.h"
+#include "solvers/registration/station_alignment.h"
 #include "stages.h"
 
 namespace edgefit {
@@ -134,18 +135,16 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   ScanSet aligned_scans;
   bool align = false;
   EDGEFIT_RETURN_IF_ERROR(
-      AlignStationsStage(model, scans, &search, cad, options, say, result, &aligned_scans, &align));
+      AlignStationsStage(model, scans, &search, weights, cad, options, say, result, &aligned_scans,
+                         &align));
   const ScanSet& final_scans = align ? aligned_scans : scans;
   CorrespondenceSearch final_search(&final_scans, weights);
   WeightedIcp final_icp(&final_scans, &final_search, &edges.normals, options.residuals);
   CellMask covered;
   EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad, options,
                                            say, result, &covered));
-  double moved = 0.0;  // the largest station correction, at 5 m [m]
-  for (const StationCorrection& c : result->stations.stations) {
-    moved = std::max(moved, c.translation + 5.0 * c.rotation);
-  }
-  const bool stations_moved = moved > options.stations.refit_correction;
+  const bool stations_moved =
+      LargestCorrection(result->stations) > options.stations.refit_correction;
   const bool covered_link = CoveringsHideALink(result->coverings, options.refinement.coverings);
   const ScanVisibility final_visibility(&final_scans);
   const JointSweep final_sweep(&final_search.lattice(), &final_visibility);

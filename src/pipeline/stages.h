@@ -81,13 +81,16 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
                     const FitOptions& options, FitResult* result);
 
 // Extension: every station registered to the model at result's estimate
-// (options.stations), the coverings found there left out; *aligned gets
-// the scans with the corrected stations and *done whether they were made
-// (more than one station and options.stations.align).
+// (options.stations), the coverings found there left out; then, while the
+// corrections have not settled (StationAlignmentOptions::rounds, settle),
+// the chain refined on the corrected stations (RefineWholeChain: result's
+// estimate moves) and the stations registered again there. *aligned gets
+// the scans with the last corrections and *done whether they were made
+// (more than one station and options.stations.align). search: over `scans`.
 Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
-                          CorrespondenceSearch* search, const CadSamples& cad,
-                          const FitOptions& options, const ProgressFn& say, FitResult* result,
-                          ScanSet* aligned, bool* done);
+                          CorrespondenceSearch* search, const CellWeights* weights,
+                          const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
+                          FitResult* result, ScanSet* aligned, bool* done);
 
 // After the second pass (the chain fitted again without the coverings): a
 // revolute joint more than options.refinement.coverings.basin_change from
