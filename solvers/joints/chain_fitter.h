@@ -170,7 +170,9 @@ class ChainFitter {
   // take = true moves *q there (*moved; refine the chain again), take =
   // false marks the record ambiguous and better_elsewhere with the
   // branch's value as its alternative (the fit is not ok). A branch that
-  // is not better leaves the joint as it is.
+  // is not better leaves the joint as it is. A taken branch clears what
+  // the earlier checks said of the joints below, except this joint's own
+  // ambiguity when its alternative is another basin from the new value too.
   Status CheckFinalBasins(const Pose& T_world_base, bool take, std::vector<double>* q,
                           std::vector<JointRecord>* records, bool* moved);
 
@@ -194,8 +196,10 @@ class ChainFitter {
   // How much better q fits than q_other on the scan with the coverings
   // (BranchGain's scoring; 0 without that scan) [m per sample]: a pair the
   // fitter's own scan cannot tell apart is told when this exceeds
-  // ambiguity_mean_loss (CheckAlternatives, and the pipeline's comparison
-  // of its passes with and without the coverings).
+  // ambiguity_mean_loss, and a pair this scores the other way by more than
+  // that is ambiguous, decided by where the coverings were found
+  // (CheckAlternatives, and the pipeline's comparison of its passes with
+  // and without the coverings).
   double CoveredMargin(const Pose& T_world_base, const std::vector<double>& q,
                        const std::vector<double>& q_other, int link) const;
 
