@@ -12,6 +12,21 @@
 #include "solvers/joints/chain_fitter.h"
 
 namespace edgefit {
+namespace {
+
+// How far apart two values of joint j are: along a prismatic joint, or the
+// shorter way round a revolute one [m], [rad].
+double Apart(const Joint& j, double a, double b) {
+  return j.type == JointType::kPrismatic ? std::abs(a - b)
+                                         : std::abs(std::remainder(a - b, 2.0 * M_PI));
+}
+
+// The sweep's distinct-basin distance of joint j [m], [rad].
+double Distinct(const Joint& j, const JointSweepOptions& sweep) {
+  return j.type == JointType::kPrismatic ? sweep.distinct_prismatic : sweep.distinct_revolute;
+}
+
+}  // namespace
 
 std::vector<bool> ChainFitter::PlacedApart(const Pose& T_world_base, const std::vector<double>& q,
                                            const std::vector<double>& q_other,
@@ -85,12 +100,9 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     EDGEFIT_RETURN_IF_ERROR(FitBranch(T_world_base, i, record.sweep.runner_up_q, *q, *records,
                                       &q_other, &other_records));
     const size_t jj = static_cast<size_t>(record.joint);
-    const double separation = j.type == JointType::kPrismatic
-                                  ? std::abs(q_other[jj] - (*q)[jj])
-                                  : std::abs(std::remainder(q_other[jj] - (*q)[jj], 2.0 * M_PI));
-    const double distinct = j.type == JointType::kPrismatic ? options_.sweep.distinct_prismatic
-                                                            : options_.sweep.distinct_revolute;
-    if (separation < 0.5 * distinct) continue;  // back in the same basin: no alternative
+    if (Apart(j, q_other[jj], (*q)[jj]) < 0.5 * Distinct(j, options_.sweep)) {
+      continue;  // back in the same basin: no alternative
+    }
     const double gain = BranchGain(T_world_base, *q, q_other, j.child_link);
     const bool take_other = gain > 0.0;
     const double alternative = take_other ? (*q)[jj] : q_other[jj];
@@ -150,9 +162,8 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
     JointSweepSummary best;
     EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, motion, options_.sweep, &best));
     const bool prismatic = j.type == JointType::kPrismatic;
-    const double separation = prismatic ? std::abs(best.q - (*q)[jj])
-                                        : std::abs(std::remainder(best.q - (*q)[jj], 2.0 * M_PI));
-    if (separation < (prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute)) {
+    if (Apart(j, best.q, (*q)[jj]) <
+        (prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute)) {
       continue;
     }
     const double better = (sweep_->Loss(body_sweep, motion, (*q)[jj], options_.sweep) - best.loss) /
@@ -179,12 +190,8 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
       // of their old values no longer holds (CheckPinning again after the
       // refinement), except an alternative of this joint that is another
       // basin from the new value as well.
-      const double distinct =
-          prismatic ? options_.sweep.distinct_prismatic : options_.sweep.distinct_revolute;
-      const double apart = prismatic ? std::abs(record.alternative - q_other[jj])
-                                     : std::abs(std::remainder(record.alternative - q_other[jj],
-                                                               2.0 * M_PI));
-      const bool keep = record.ambiguous && apart >= 0.5 * distinct;
+      const bool keep = record.ambiguous && Apart(j, record.alternative, q_other[jj]) >=
+                                                0.5 * Distinct(j, options_.sweep);
       const JointRecord kept = record;
       const std::vector<bool> below = SubtreeMask(j.child_link);
       for (JointRecord& r : other_records) {

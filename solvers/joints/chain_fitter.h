@@ -90,8 +90,8 @@ struct ChainOptions {
   // refinement still ended with point-to-point residuals, the branches
   // moved the jaw of a realistic 1.7 mm scene from 3.8 to 1.2 mm off but on
   // an ideal 4 mm scan from 6.0 to 9.9 mm off (not tried since). Revolute
-  // joints keep the sweep's 5 deg: at 1 deg a jacketed forearm's sweep preferred 1.7 deg off the right value by 0.09
-  // mm/sample. [rad], [m]
+  // joints keep the sweep's 5 deg: at 1 deg a jacketed forearm's sweep
+  // preferred 1.7 deg off the right value by 0.09 mm/sample. [rad], [m]
   double final_basin_revolute = 5.0 * M_PI / 180.0;
   double final_basin_prismatic = 0.005;
   // Rounds in which a better basin found by CheckFinalBasins is taken (and
