@@ -19,7 +19,9 @@ bool ConveyanceBaseRoughOptions::IsValid(std::string* error) const {
     return false;
   };
   if (!(cell > 0.0) || !(model_spacing > 0.0)) return fail("cell and model_spacing must be > 0");
-  if (!tips.IsValid(error) || !symmetry.IsValid(error)) return false;
+  if (!tips.IsValid(error) || !scan_support.IsValid(error) || !symmetry.IsValid(error)) {
+    return false;
+  }
   if (!(min_tip_height >= 0.0) || !(match_tolerance >= 0.0)) {
     return fail("min_tip_height and match_tolerance must be >= 0");
   }
@@ -137,35 +139,6 @@ Status FitConveyanceBaseRough(const ScanSet& scans,
   for (const Eigen::Vector3d& v : base_mesh_link.vertices) bottom = std::min(bottom, v.z());
   const double base_z = result->floor_z - bottom;
 
-  // Scan tips (world frame).
-  const double min_z = result->floor_z + options.min_tip_height;
-  auto for_each_point = [&](auto&& visit) {
-    for (const OrganizedScan& scan : scans.scans) {
-      for (size_t i = 0; i < scan.size(); ++i) {
-        if (!scan.IsValid(i)) continue;
-        const Eigen::Vector3d p = scan.PointWorld(i);
-        if (p.z() < min_z || (!options.roi_world.isEmpty() && !options.roi_world.contains(p))) {
-          continue;
-        }
-        visit(p);
-      }
-    }
-  };
-  Eigen::AlignedBox2d extent;
-  for_each_point([&](const Eigen::Vector3d& p) { extent.extend(p.head<2>()); });
-  HeightMap scan_map;
-  EDGEFIT_RETURN_IF_ERROR(HeightMap::Create(extent, options.cell, &scan_map));
-  for_each_point([&](const Eigen::Vector3d& p) { scan_map.Add(p, 0); });
-  for (const HeightMap::Tip& tip : scan_map.ConvexTips(options.tips)) {
-    result->scan_tips.push_back(tip.p);
-  }
-  const std::vector<SymmetryAxis> scan_axes = FindSymmetryAxes(result->scan_tips, options.symmetry);
-  if (scan_axes.empty()) {
-    return Status::Error("conveyance base rough: no symmetric pair among the scan's " +
-                         std::to_string(result->scan_tips.size()) + " convex tips");
-  }
-  result->symmetric_scan_tips = 2 * static_cast<int>(scan_axes.front().pairs.size());
-
   // CAD tips (base frame) and their pairs' ranges.
   const std::vector<double> q0 = ReferenceJoints(model);
   std::vector<ModelTip> model_tips;
@@ -186,6 +159,48 @@ Status FitConveyanceBaseRough(const ScanSet& scans,
                                            options.symmetry.seed));
     }
   }
+
+  // Scan tips (world frame): the corroborated height map of the points
+  // above the floor, and of its convex tips those at a height one of the
+  // CAD pairs can take (no other can match one).
+  const double min_z = result->floor_z + options.min_tip_height;
+  std::vector<Eigen::Vector3d> high;
+  Eigen::AlignedBox2d extent;
+  for (const OrganizedScan& scan : scans.scans) {
+    for (size_t i = 0; i < scan.size(); ++i) {
+      if (!scan.IsValid(i)) continue;
+      const Eigen::Vector3d p = scan.PointWorld(i);
+      if (p.z() < min_z || (!options.roi_world.isEmpty() && !options.roi_world.contains(p))) {
+        continue;
+      }
+      high.push_back(p);
+      extent.extend(p.head<2>());
+    }
+  }
+  HeightMap scan_map;
+  EDGEFIT_RETURN_IF_ERROR(HeightMap::Create(extent, options.cell, &scan_map));
+  scan_map.AddCorroborated(high, options.scan_support);
+  high = std::vector<Eigen::Vector3d>();
+  auto in_reach = [&](double height) {
+    for (const std::vector<ModelTipPair>& pairs : model_pairs) {
+      for (const ModelTipPair& pair : pairs) {
+        if (pair.height.Contains(height, options.match_tolerance)) return true;
+      }
+    }
+    return false;
+  };
+  for (const HeightMap::Tip& tip : scan_map.ConvexTips(options.tips)) {
+    ++result->convex_scan_tips;
+    if (in_reach(tip.p.z() - base_z)) result->scan_tips.push_back(tip.p);
+  }
+  const std::vector<SymmetryAxis> scan_axes = FindSymmetryAxes(result->scan_tips, options.symmetry);
+  if (scan_axes.empty()) {
+    return Status::Error("conveyance base rough: no symmetric pair among the scan's " +
+                         std::to_string(result->scan_tips.size()) +
+                         " convex tips at the heights of the model's (of " +
+                         std::to_string(result->convex_scan_tips) + ")");
+  }
+  result->symmetric_scan_tips = 2 * static_cast<int>(scan_axes.front().pairs.size());
 
   // Matches and the placements they support.
   const double tol = options.match_tolerance;

@@ -4,7 +4,9 @@
 //   1. The scan's floor (EstimateFloorHeight, base_rough.h); the base stands
 //      level on it, so its pose is (x, y, yaw).
 //   2. Scan tips: the height map of the points above the floor and its
-//      convex tips (height_map.h, Eq. 11-13).
+//      convex tips (height_map.h, Eq. 11-13). Extension: each cell's height
+//      corroborated by its other points (mixed pixels are no tips), and
+//      only tips at a height some CAD pair of step 4 can take.
 //   3. The centre axis: RANSAC over pairs of tips (symmetry_axis.h); tips
 //      without a symmetric partner are dropped.
 //   4. CAD tips: the same height map and tips on the model's surface samples
@@ -44,6 +46,7 @@ namespace edgefit {
 struct ConveyanceBaseRoughOptions {
   double cell = 0.01;  // [m] height-map cell (scan and CAD)
   ConvexTipOptions tips;
+  CellSupport scan_support;  // of the scan's cell heights (not the CAD's)
   // Scan points at least this far above the floor enter the height map [m].
   double min_tip_height = 0.1;
   SymmetryAxisOptions symmetry;
@@ -65,10 +68,12 @@ struct ConveyanceBaseRoughOptions {
 };
 
 struct ConveyanceBaseRoughResult {
-  Pose T_world_base = Pose::Identity();     // the best candidate
-  std::vector<Pose> candidates;             // best first
-  double floor_z = 0.0;                     // [m]
-  std::vector<Eigen::Vector3d> scan_tips;   // world frame, highest first
+  Pose T_world_base = Pose::Identity();  // the best candidate
+  std::vector<Pose> candidates;          // best first
+  double floor_z = 0.0;                  // [m]
+  int convex_scan_tips = 0;              // the scan height map's
+  // Of those, the ones at the CAD pairs' heights (world frame, highest first).
+  std::vector<Eigen::Vector3d> scan_tips;
   std::vector<Eigen::Vector3d> model_tips;  // base frame, zero posture
   int symmetric_scan_tips = 0;              // paired about the best scan axis
   int matches = 0;                          // scan pair / CAD pair matches over all axes

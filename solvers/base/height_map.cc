@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <limits>
 
@@ -15,6 +16,14 @@ bool ConvexTipOptions::IsValid(std::string* error) const {
           "convex tips: threshold, min_drop and separation must be >= 0, "
           "min_neighbours in [0, 8]";
     }
+    return false;
+  }
+  return true;
+}
+
+bool CellSupport::IsValid(std::string* error) const {
+  if (points < 1 || !(depth >= 0.0)) {
+    if (error != nullptr) *error = "cell support: points must be >= 1, depth >= 0";
     return false;
   }
   return true;
@@ -45,15 +54,56 @@ Status HeightMap::Create(const Eigen::AlignedBox2d& extent, double cell, HeightM
   return Status::Ok();
 }
 
-void HeightMap::Add(const Eigen::Vector3d& p, int source) {
+int HeightMap::CellOf(const Eigen::Vector3d& p) const {
   const Eigen::Vector2d local = p.head<2>() - origin_;
   const double fi = std::floor(local.x() / cell_), fj = std::floor(local.y() / cell_);
-  if (!(fi >= 0.0 && fj >= 0.0 && fi < width_ && fj < height_)) return;  // NaN too
-  const int k = Index(static_cast<int>(fi), static_cast<int>(fj));
-  if (source_[k] >= 0 && !(p.z() > top_[k].z())) return;
+  if (!(fi >= 0.0 && fj >= 0.0 && fi < width_ && fj < height_)) return -1;  // NaN too
+  return Index(static_cast<int>(fi), static_cast<int>(fj));
+}
+
+void HeightMap::Add(const Eigen::Vector3d& p, int source) {
+  const int k = CellOf(p);
+  if (k < 0 || (source_[k] >= 0 && !(p.z() > top_[k].z()))) return;
+  const Eigen::Vector2d local = p.head<2>() - origin_;
   top_[k] = Eigen::Vector3f(static_cast<float>(local.x()), static_cast<float>(local.y()),
                             static_cast<float>(p.z()));
   source_[k] = source;
+}
+
+void HeightMap::AddCorroborated(const std::vector<Eigen::Vector3d>& points,
+                                const CellSupport& support) {
+  // The points by cell (a counting sort), then each cell's from the top.
+  std::vector<int> cell_of(points.size());
+  std::vector<int> first(source_.size() + 1, 0);
+  for (size_t i = 0; i < points.size(); ++i) {
+    cell_of[i] = CellOf(points[i]);
+    if (cell_of[i] >= 0) ++first[static_cast<size_t>(cell_of[i]) + 1];
+  }
+  for (size_t k = 0; k < source_.size(); ++k) first[k + 1] += first[k];
+  std::vector<int> order(static_cast<size_t>(first.back()));
+  std::vector<int> next(first.begin(), first.end() - 1);
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (cell_of[i] >= 0)
+      order[static_cast<size_t>(next[static_cast<size_t>(cell_of[i])]++)] = static_cast<int>(i);
+  }
+  const size_t need = static_cast<size_t>(support.points);
+  for (size_t k = 0; k < source_.size(); ++k) {
+    if (source_[k] >= 0) continue;
+    const auto begin = order.begin() + first[k], end = order.begin() + first[k + 1];
+    if (static_cast<size_t>(end - begin) < need) continue;
+    std::sort(begin, end, [&](int a, int b) {
+      const double za = points[static_cast<size_t>(a)].z(), zb = points[static_cast<size_t>(b)].z();
+      return za != zb ? za > zb : a < b;
+    });
+    for (auto top = begin; end - top >= static_cast<std::ptrdiff_t>(need); ++top) {
+      const double z = points[static_cast<size_t>(*top)].z();
+      if (z - points[static_cast<size_t>(*(top + static_cast<std::ptrdiff_t>(need) - 1))].z() <=
+          support.depth) {
+        Add(points[static_cast<size_t>(*top)], *top);
+        break;
+      }
+    }
+  }
 }
 
 std::vector<HeightMap::Tip> HeightMap::ConvexTips(const ConvexTipOptions& options) const {

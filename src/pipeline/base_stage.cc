@@ -30,12 +30,13 @@ Status RoughBase(const ScanSet& scans, const std::vector<std::vector<Eigen::Vect
       result->base_rough.candidates = result->arm_tips.candidates;
       result->base_rough.floor_z = result->arm_tips.floor_z;
       result->base_rough.seconds = result->arm_tips.seconds;
-      char line[200];
+      char line[240];
       std::snprintf(line, sizeof(line),
-                    "base: %zu scan tips (%d paired), %zu model tips, %d matches, %d poses scored",
-                    result->arm_tips.scan_tips.size(), result->arm_tips.symmetric_scan_tips,
-                    result->arm_tips.model_tips.size(), result->arm_tips.matches,
-                    result->arm_tips.scored);
+                    "base: %d convex tips in the scan, %zu at arm tips' heights (%d paired), %zu "
+                    "model tips, %d matches, %d poses scored",
+                    result->arm_tips.convex_scan_tips, result->arm_tips.scan_tips.size(),
+                    result->arm_tips.symmetric_scan_tips, result->arm_tips.model_tips.size(),
+                    result->arm_tips.matches, result->arm_tips.scored);
       say(line);
       return Status::Ok();
     }

@@ -17,6 +17,7 @@ json BaseRoughJson(const FitResult& fit) {
   if (fit.base_rough_method == BaseOptions::Method::kArmTips) {
     return {{"method", "arm_tips"},
             {"floor_z", fit.arm_tips.floor_z},
+            {"convex_scan_tips", fit.arm_tips.convex_scan_tips},
             {"scan_tips", fit.arm_tips.scan_tips.size()},
             {"symmetric_scan_tips", fit.arm_tips.symmetric_scan_tips},
             {"model_tips", fit.arm_tips.model_tips.size()},

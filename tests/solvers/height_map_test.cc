@@ -1,6 +1,7 @@
 // Height map and convex tips (paper Sec. 6.1, Eq. 11-13) on synthetic
 // points: a cone's apex is a tip wherever it falls in its cell; a box's
-// corners, a ridge and a stray point in the air are not.
+// corners, a ridge and a stray point in the air are not; returns hanging
+// above a surface (mixed pixels) are no tips of a corroborated map.
 #include "solvers/base/height_map.h"
 
 #include <gtest/gtest.h>
@@ -81,6 +82,65 @@ TEST(HeightMap, TwoNearTipsKeepTheHigherOne) {
   ASSERT_EQ(tips.size(), 1u);
   EXPECT_NEAR(tips[0].p.x(), 0.36, 0.003);
   EXPECT_EQ(map.ConvexTips(ConvexTipOptions()).size(), 2u);  // 5 cm
+}
+
+// Mixed pixels behind a pin's edge: two returns per 1 cm cell along a strip
+// beside the post, at heights between the plate's and above the apex.
+TEST(HeightMap, ReturnsHangingAboveASurfaceAreNoTipsOfACorroboratedMap) {
+  const Eigen::Vector2d apex(0.305, 0.405);
+  std::vector<Eigen::Vector3d> points;
+  for (double x = 0.0; x <= 1.0; x += 0.002) {
+    for (double y = 0.0; y <= 1.0; y += 0.002) {
+      points.emplace_back(x, y, 0.1 + Pin(x, y, apex));  // on a plate 0.1 m high
+    }
+  }
+  for (int k = 0; k < 40; ++k) {
+    const double x = 0.355 + 0.01 * k, z = 0.12 + 0.003 * (k % 7) * (k % 5);
+    points.emplace_back(x, 0.403, z);
+    points.emplace_back(x, 0.406, z + 0.004 + 0.001 * (k % 3));
+  }
+  const Eigen::AlignedBox2d extent(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1));
+  HeightMap plain, corroborated;
+  ASSERT_TRUE(HeightMap::Create(extent, 0.01, &plain).ok());
+  ASSERT_TRUE(HeightMap::Create(extent, 0.01, &corroborated).ok());
+  for (size_t i = 0; i < points.size(); ++i) plain.Add(points[i], static_cast<int>(i));
+  corroborated.AddCorroborated(points, CellSupport());
+  // The premise: the highest return per cell makes tips of them.
+  EXPECT_GT(plain.ConvexTips(ConvexTipOptions()).size(), 3u);
+  const std::vector<HeightMap::Tip> tips = corroborated.ConvexTips(ConvexTipOptions());
+  ASSERT_EQ(tips.size(), 1u);
+  EXPECT_LT((tips[0].p.head<2>() - apex).norm(), 0.003);
+  EXPECT_NEAR(tips[0].p.z(), 0.33, 0.004);
+  EXPECT_TRUE(points[static_cast<size_t>(tips[0].source)].isApprox(tips[0].p, 1e-6));
+}
+
+TEST(HeightMap, ACellWithTooFewPointsStaysEmpty) {
+  HeightMap map;
+  ASSERT_TRUE(HeightMap::Create(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)),
+                                0.01, &map)
+                  .ok());
+  // Two points, 2 mm apart in height: corroborated by 2, not by 3.
+  const std::vector<Eigen::Vector3d> points = {{0.505, 0.505, 1.0}, {0.506, 0.505, 0.998}};
+  ConvexTipOptions loose;
+  loose.min_neighbours = 0;
+  map.AddCorroborated(points, CellSupport());
+  EXPECT_TRUE(map.ConvexTips(loose).empty());
+  CellSupport two;
+  two.points = 2;
+  map.AddCorroborated(points, two);
+  const std::vector<HeightMap::Tip> tips = map.ConvexTips(loose);
+  ASSERT_EQ(tips.size(), 1u);
+  EXPECT_EQ(tips[0].source, 0);
+  two.depth = 0.001;  // too shallow to reach the second point
+  HeightMap shallow;
+  ASSERT_TRUE(HeightMap::Create(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)),
+                                0.01, &shallow)
+                  .ok());
+  shallow.AddCorroborated(points, two);
+  EXPECT_TRUE(shallow.ConvexTips(loose).empty());
+  CellSupport none;
+  none.points = 0;
+  EXPECT_FALSE(none.IsValid(nullptr));
 }
 
 TEST(HeightMap, RefusesAGridTooLargeAndBadOptions) {
