@@ -119,6 +119,7 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     JointRecord& checked = (*records)[i];
     checked.alternative = alternative;
     checked.margin = std::abs(gain);
+    checked.covered_margin = covered_margin;
     // A close pair is told by the scan with the coverings; a pair the two
     // scans decide each their own way is decided by the coverings, which
     // were found at the first estimate and can hide the other value's
@@ -134,10 +135,11 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
                     1e3 * std::abs(covered_margin), covered_margin > 0.0 ? "worse" : "better");
     }
     char line[400];
-    std::snprintf(
-        line, sizeof(line), "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s%s",
-        j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin, told,
-        take_other ? " (the first fit's value)" : "", checked.ambiguous ? ": AMBIGUOUS" : "");
+    std::snprintf(line, sizeof(line),
+                  "alternatives: %s = %.5f, other value %.5f is %.3f mm/sample worse%s%s%s",
+                  j.name.c_str(), (*q)[jj], alternative, 1e3 * checked.margin, told,
+                  take_other ? " (the first fit's value)" : "",
+                  checked.ambiguous ? ": AMBIGUOUS" : "");
     say_(line);
   }
   return Status::Ok();
@@ -204,6 +206,7 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
           r.ambiguous = true;
           r.alternative = kept.alternative;
           r.margin = kept.margin;
+          r.covered_margin = kept.covered_margin;
         }
       }
       *q = std::move(q_other);

@@ -135,6 +135,10 @@ struct JointRecord {
   bool better_elsewhere = false;
   double alternative = 0.0;
   double margin = std::numeric_limits<double>::infinity();
+  // CheckAlternatives: how much better the value taken fits the scan with
+  // the coverings, per sample [m] (negative: the alternative does); NaN
+  // when no pair was compared.
+  double covered_margin = std::numeric_limits<double>::quiet_NaN();
 };
 
 class ChainFitter {

@@ -40,6 +40,7 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     quality.better_elsewhere = record.better_elsewhere;
     quality.alternative_value = record.alternative;
     quality.ambiguity_margin = record.margin;
+    quality.covered_margin = record.covered_margin;
     quality.ok = quality.ok && !quality.ambiguous;
     result->bodies.push_back(quality);
   }
@@ -58,6 +59,15 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
                     b.link.c_str(), b.joint.c_str(), b.alternative_value,
                     result->q[static_cast<size_t>(model.JointIndex(b.joint))],
                     1e3 * b.ambiguity_margin);
+    } else if (b.ambiguous && b.covered_margin < -options.chain.ambiguity_mean_loss) {
+      std::snprintf(line, sizeof(line),
+                    "%s is ambiguous: %s = %.4f fits the scan better without the parts found "
+                    "covered (Eq. 9 loss %.3f mm lower per sample), %.4f with them (%.3f mm "
+                    "lower); the coverings were found at the first estimate and may hide either "
+                    "value's surfaces",
+                    b.link.c_str(), b.joint.c_str(),
+                    result->q[static_cast<size_t>(model.JointIndex(b.joint))],
+                    1e3 * b.ambiguity_margin, b.alternative_value, -1e3 * b.covered_margin);
     } else if (b.ambiguous) {
       std::snprintf(line, sizeof(line),
                     "%s is ambiguous: %s = %.4f and %.4f fit the scan about equally well (Eq. 9 "

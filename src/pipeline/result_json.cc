@@ -49,6 +49,9 @@ json PerLinkJson(const FitResult& fit) {
     if (std::isfinite(b.ambiguity_margin)) {  // an alternative value was fitted and compared
       per_link[b.link]["alternative_value"] = b.alternative_value;
       per_link[b.link]["alternative_margin_m"] = b.ambiguity_margin;
+      if (std::isfinite(b.covered_margin)) {
+        per_link[b.link]["alternative_covered_margin_m"] = b.covered_margin;
+      }
     }
   }
   return per_link;

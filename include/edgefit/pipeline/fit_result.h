@@ -34,6 +34,10 @@ struct BodyQuality {
   bool better_elsewhere = false;
   double alternative_value = 0.0;
   double ambiguity_margin = std::numeric_limits<double>::infinity();
+  // The same pair on the scan with the parts found covered: how much better
+  // the reported value fits there per sample [m] (negative: the
+  // alternative; NaN when not compared).
+  double covered_margin = std::numeric_limits<double>::quiet_NaN();
   bool ok = false;
 };
 
