@@ -38,7 +38,13 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
           &covered, &coverings));
     }
     const StationAlignmentSummary last = result->stations;
-    *aligned = scans;
+    if (round == 0) {
+      *aligned = scans;
+    } else {  // registered again from the written poses
+      for (size_t k = 0; k < scans.scans.size(); ++k) {
+        aligned->scans[k].set_T_world_scanner(scans.scans[k].T_world_scanner());
+      }
+    }
     EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(model, cad.chain, result->T_world_base, result->q,
                                                  find_coverings ? &covered : nullptr, stations,
                                                  aligned, &result->stations));
