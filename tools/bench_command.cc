@@ -376,6 +376,7 @@ Command BenchCommand() {
        "covering_rounds",
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",
+       "mixed_pixel_lines",
        "beam",
        "jackets"},
       RunBench};

@@ -255,6 +255,7 @@ Command FitCommand() {
        "covering_rounds",
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",
+       "mixed_pixel_lines",
        "init",
        "truth",
        "out_joint_states",

@@ -34,6 +34,9 @@ DEFINE_bool(remove_mixed_pixels, false,
             "from the scans before the edges and the fit.");
 DEFINE_double(mixed_pixel_tolerance_mm, 5.0,
               "A mixed pixel lies this far off the surfaces on both sides of it [mm].");
+DEFINE_int32(mixed_pixel_lines, 3,
+             "A mixed pixel is between the surfaces along this many of the 4 grid lines through "
+             "it (1-4; fewer finds more, and more noisy surface cells with them).");
 DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
@@ -59,6 +62,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
+  options->mixed_pixels.min_lines = FLAGS_mixed_pixel_lines;
   if (!FLAGS_init.empty()) {
     double x = 0.0, y = 0.0, yaw = 0.0;
     EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));
