@@ -76,7 +76,7 @@ void HeightMap::AddCorroborated(const std::vector<Eigen::Vector3d>& points,
   std::vector<int> cell_of(points.size());
   std::vector<int> first(source_.size() + 1, 0);
   for (size_t i = 0; i < points.size(); ++i) {
-    cell_of[i] = CellOf(points[i]);
+    cell_of[i] = std::isfinite(points[i].z()) ? CellOf(points[i]) : -1;
     if (cell_of[i] >= 0) ++first[static_cast<size_t>(cell_of[i]) + 1];
   }
   for (size_t k = 0; k < source_.size(); ++k) first[k + 1] += first[k];
