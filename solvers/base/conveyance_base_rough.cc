@@ -165,8 +165,11 @@ Status FitConveyanceBaseRough(const ScanSet& scans,
   // CAD pairs can take (no other can match one).
   const double min_z = result->floor_z + options.min_tip_height;
   std::vector<Eigen::Vector3d> high;
+  std::vector<float> areas;  // spacing^2 at each point's range
   Eigen::AlignedBox2d extent;
   for (const OrganizedScan& scan : scans.scans) {
+    const double step = std::max(std::abs(scan.lattice().elevation_step()),
+                                 std::abs(scan.lattice().azimuth_step()));
     for (size_t i = 0; i < scan.size(); ++i) {
       if (!scan.IsValid(i)) continue;
       const Eigen::Vector3d p = scan.PointWorld(i);
@@ -174,13 +177,15 @@ Status FitConveyanceBaseRough(const ScanSet& scans,
         continue;
       }
       high.push_back(p);
+      areas.push_back(static_cast<float>(std::pow(step * scan.point_scanner(i).norm(), 2)));
       extent.extend(p.head<2>());
     }
   }
   HeightMap scan_map;
   EDGEFIT_RETURN_IF_ERROR(HeightMap::Create(extent, options.cell, &scan_map));
-  scan_map.AddCorroborated(high, options.scan_support);
+  scan_map.AddCorroborated(high, areas, options.scan_support);
   high = std::vector<Eigen::Vector3d>();
+  areas = std::vector<float>();
   auto in_reach = [&](double height) {
     for (const std::vector<ModelTipPair>& pairs : model_pairs) {
       for (const ModelTipPair& pair : pairs) {

@@ -22,8 +22,8 @@ bool ConvexTipOptions::IsValid(std::string* error) const {
 }
 
 bool CellSupport::IsValid(std::string* error) const {
-  if (points < 1 || !(depth >= 0.0)) {
-    if (error != nullptr) *error = "cell support: points must be >= 1, depth >= 0";
+  if (points < 1 || !(depth >= 0.0) || !(cell_share >= 0.0)) {
+    if (error != nullptr) *error = "cell support: points must be >= 1, depth and cell_share >= 0";
     return false;
   }
   return true;
@@ -71,7 +71,7 @@ void HeightMap::Add(const Eigen::Vector3d& p, int source) {
 }
 
 void HeightMap::AddCorroborated(const std::vector<Eigen::Vector3d>& points,
-                                const CellSupport& support) {
+                                const std::vector<float>& areas, const CellSupport& support) {
   // The points by cell (a counting sort), then each cell's from the top.
   std::vector<int> cell_of(points.size());
   std::vector<int> first(source_.size() + 1, 0);
@@ -86,19 +86,23 @@ void HeightMap::AddCorroborated(const std::vector<Eigen::Vector3d>& points,
     if (cell_of[i] >= 0)
       order[static_cast<size_t>(next[static_cast<size_t>(cell_of[i])]++)] = static_cast<int>(i);
   }
-  const size_t need = static_cast<size_t>(support.points);
+  const std::ptrdiff_t need = support.points;
+  const double need_area = support.cell_share * cell_ * cell_;
+  auto z_of = [&](int i) { return points[static_cast<size_t>(i)].z(); };
   for (size_t k = 0; k < source_.size(); ++k) {
     if (source_[k] >= 0) continue;
     const auto begin = order.begin() + first[k], end = order.begin() + first[k + 1];
-    if (static_cast<size_t>(end - begin) < need) continue;
-    std::sort(begin, end, [&](int a, int b) {
-      const double za = points[static_cast<size_t>(a)].z(), zb = points[static_cast<size_t>(b)].z();
-      return za != zb ? za > zb : a < b;
-    });
-    for (auto top = begin; end - top >= static_cast<std::ptrdiff_t>(need); ++top) {
-      const double z = points[static_cast<size_t>(*top)].z();
-      if (z - points[static_cast<size_t>(*(top + static_cast<std::ptrdiff_t>(need) - 1))].z() <=
-          support.depth) {
+    if (end - begin < need) continue;
+    std::sort(begin, end,
+              [&](int a, int b) { return z_of(a) != z_of(b) ? z_of(a) > z_of(b) : a < b; });
+    for (auto top = begin; end - top >= need; ++top) {
+      std::ptrdiff_t count = 0;
+      double area = 0.0;
+      for (auto below = top; below != end && z_of(*top) - z_of(*below) <= support.depth; ++below) {
+        ++count;
+        if (!areas.empty()) area += areas[static_cast<size_t>(*below)];
+      }
+      if (count >= need && (areas.empty() || area >= need_area)) {
         Add(points[static_cast<size_t>(*top)], *top);
         break;
       }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 namespace edgefit {
@@ -104,7 +105,7 @@ TEST(HeightMap, ReturnsHangingAboveASurfaceAreNoTipsOfACorroboratedMap) {
   ASSERT_TRUE(HeightMap::Create(extent, 0.01, &plain).ok());
   ASSERT_TRUE(HeightMap::Create(extent, 0.01, &corroborated).ok());
   for (size_t i = 0; i < points.size(); ++i) plain.Add(points[i], static_cast<int>(i));
-  corroborated.AddCorroborated(points, CellSupport());
+  corroborated.AddCorroborated(points, {}, CellSupport());
   // The premise: the highest return per cell makes tips of them.
   EXPECT_GT(plain.ConvexTips(ConvexTipOptions()).size(), 3u);
   const std::vector<HeightMap::Tip> tips = corroborated.ConvexTips(ConvexTipOptions());
@@ -123,11 +124,11 @@ TEST(HeightMap, ACellWithTooFewPointsStaysEmpty) {
   const std::vector<Eigen::Vector3d> points = {{0.505, 0.505, 1.0}, {0.506, 0.505, 0.998}};
   ConvexTipOptions loose;
   loose.min_neighbours = 0;
-  map.AddCorroborated(points, CellSupport());
+  map.AddCorroborated(points, {}, CellSupport());
   EXPECT_TRUE(map.ConvexTips(loose).empty());
   CellSupport two;
   two.points = 2;
-  map.AddCorroborated(points, two);
+  map.AddCorroborated(points, {}, two);
   const std::vector<HeightMap::Tip> tips = map.ConvexTips(loose);
   ASSERT_EQ(tips.size(), 1u);
   EXPECT_EQ(tips[0].source, 0);
@@ -136,11 +137,30 @@ TEST(HeightMap, ACellWithTooFewPointsStaysEmpty) {
   ASSERT_TRUE(HeightMap::Create(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)),
                                 0.01, &shallow)
                   .ok());
-  shallow.AddCorroborated(points, two);
+  shallow.AddCorroborated(points, {}, two);
   EXPECT_TRUE(shallow.ConvexTips(loose).empty());
   CellSupport none;
   none.points = 0;
   EXPECT_FALSE(none.IsValid(nullptr));
+}
+
+// Each point stands for spacing^2 of surface: at a 2 mm spacing, a quarter
+// of a 1 cm cell takes 7 points (4 do not), at 6 mm the 3 points.
+TEST(HeightMap, TheCorroboratingPointsMustCoverAShareOfTheCell) {
+  for (const auto& [spacing, count, kept] :
+       {std::tuple<double, int, bool>{0.002, 4, false}, {0.002, 7, true}, {0.006, 3, true}}) {
+    HeightMap map;
+    ASSERT_TRUE(HeightMap::Create(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)),
+                                  0.01, &map)
+                    .ok());
+    std::vector<Eigen::Vector3d> points;
+    for (int k = 0; k < count; ++k) points.emplace_back(0.501 + 0.001 * k, 0.505, 1.0 - 0.0005 * k);
+    map.AddCorroborated(points, std::vector<float>(points.size(), spacing * spacing),
+                        CellSupport());
+    ConvexTipOptions loose;
+    loose.min_neighbours = 0;
+    EXPECT_EQ(map.ConvexTips(loose).size(), kept ? 1u : 0u) << spacing << " " << count;
+  }
 }
 
 TEST(HeightMap, RefusesAGridTooLargeAndBadOptions) {
