@@ -116,6 +116,10 @@ TEST(ConveyanceFitTest, AFrameTurnedHalfATurnIsToldByItsLinks) {
   for (const int alternatives : {0, 1}) {
     FitOptions options = FitOptionsFor(AssetKind::kConveyance);
     options.base.hypotheses.alternatives = alternatives;
+    // The paper's height map (each cell's highest point): the corroborated
+    // one finds the right pose first on this scene.
+    options.base.arm_tips.scan_support.points = 1;
+    options.base.arm_tips.scan_support.cell_share = 0.0;
     FitResult fit;
     ASSERT_TRUE(Fit(s.model, scan.scans, options, nullptr, &fit).ok());
     FitErrors errors;

@@ -105,7 +105,8 @@ TEST(HeightMap, ReturnsHangingAboveASurfaceAreNoTipsOfACorroboratedMap) {
   ASSERT_TRUE(HeightMap::Create(extent, 0.01, &plain).ok());
   ASSERT_TRUE(HeightMap::Create(extent, 0.01, &corroborated).ok());
   for (size_t i = 0; i < points.size(); ++i) plain.Add(points[i], static_cast<int>(i));
-  corroborated.AddCorroborated(points, {}, CellSupport());
+  // Each point stands for the 2 mm grid's 4 mm^2: a quarter of a cell takes 7.
+  corroborated.AddCorroborated(points, std::vector<float>(points.size(), 4e-6f), CellSupport());
   // The premise: the highest return per cell makes tips of them.
   EXPECT_GT(plain.ConvexTips(ConvexTipOptions()).size(), 3u);
   const std::vector<HeightMap::Tip> tips = corroborated.ConvexTips(ConvexTipOptions());
@@ -124,7 +125,9 @@ TEST(HeightMap, ACellWithTooFewPointsStaysEmpty) {
   const std::vector<Eigen::Vector3d> points = {{0.505, 0.505, 1.0}, {0.506, 0.505, 0.998}};
   ConvexTipOptions loose;
   loose.min_neighbours = 0;
-  map.AddCorroborated(points, {}, CellSupport());
+  CellSupport three;
+  three.points = 3;
+  map.AddCorroborated(points, {}, three);
   EXPECT_TRUE(map.ConvexTips(loose).empty());
   CellSupport two;
   two.points = 2;
@@ -145,10 +148,12 @@ TEST(HeightMap, ACellWithTooFewPointsStaysEmpty) {
 }
 
 // Each point stands for spacing^2 of surface: at a 2 mm spacing, a quarter
-// of a 1 cm cell takes 7 points (4 do not), at 6 mm the 3 points.
+// of a 1 cm cell takes 7 points (4 do not), at 6 mm the 2 points.
 TEST(HeightMap, TheCorroboratingPointsMustCoverAShareOfTheCell) {
-  for (const auto& [spacing, count, kept] :
-       {std::tuple<double, int, bool>{0.002, 4, false}, {0.002, 7, true}, {0.006, 3, true}}) {
+  for (const auto& [spacing, count, kept] : {std::tuple<double, int, bool>{0.002, 4, false},
+                                             {0.002, 7, true},
+                                             {0.006, 1, false},
+                                             {0.006, 2, true}}) {
     HeightMap map;
     ASSERT_TRUE(HeightMap::Create(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)),
                                   0.01, &map)
