@@ -127,7 +127,7 @@ Status ChainFitter::CheckAlternatives(const Pose& T_world_base, std::vector<Join
     // end there lies off the CAD): ambiguous.
     const double bound = options_.ambiguity_mean_loss;
     const bool told_by_coverings = checked.margin < bound && covered_margin > bound;
-    const bool coverings_decide = covered_margin < -bound;
+    const bool coverings_decide = DecidedByCoverings(covered_margin, options_);
     checked.ambiguous = (checked.margin < bound && !told_by_coverings) || coverings_decide;
     char told[96] = "";
     if (told_by_coverings || coverings_decide) {

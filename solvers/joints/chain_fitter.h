@@ -141,6 +141,13 @@ struct JointRecord {
   double covered_margin = std::numeric_limits<double>::quiet_NaN();
 };
 
+// The scan with the coverings prefers the alternative by more than
+// ambiguity_mean_loss per sample: the pair is decided by where the
+// coverings were found (CheckAlternatives calls it ambiguous).
+inline bool DecidedByCoverings(double covered_margin, const ChainOptions& options) {
+  return covered_margin < -options.ambiguity_mean_loss;
+}
+
 class ChainFitter {
  public:
   // All borrowed and must outlive the fitter: icp_samples and sweep_samples

@@ -59,7 +59,7 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
                     b.link.c_str(), b.joint.c_str(), b.alternative_value,
                     result->q[static_cast<size_t>(model.JointIndex(b.joint))],
                     1e3 * b.ambiguity_margin);
-    } else if (b.ambiguous && b.covered_margin < -options.chain.ambiguity_mean_loss) {
+    } else if (b.ambiguous && DecidedByCoverings(b.covered_margin, options.chain)) {
       std::snprintf(line, sizeof(line),
                     "%s is ambiguous: %s = %.4f fits the scan better without the parts found "
                     "covered (Eq. 9 loss %.3f mm lower per sample), %.4f with them (%.3f mm "
