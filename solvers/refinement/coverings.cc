@@ -148,6 +148,12 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
     }
   }
 
+  // A link a prismatic joint slides is never covered (coverings.h).
+  std::vector<bool> slides(model.links().size(), false);
+  for (const Joint& j : model.joints()) {
+    if (j.type == JointType::kPrismatic) slides[static_cast<size_t>(j.child_link)] = true;
+  }
+
   *summary = CoveringSummary();
   summary->link_matched.assign(model.links().size(), 0);
   summary->link_covered.assign(model.links().size(), 0);
@@ -170,9 +176,9 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
           }
         }
         std::nth_element(block.begin(), block.begin() + block.size() / 2, block.end());
-        const bool is_covering = block[block.size() / 2] > options.area_offset ||
-                                 offset[s][cell] > options.point_offset;
         const size_t link = static_cast<size_t>(owner[s][cell]);
+        const bool is_covering = !slides[link] && (block[block.size() / 2] > options.area_offset ||
+                                                   offset[s][cell] > options.point_offset);
         ++summary->matched;
         ++summary->link_matched[link];
         if (!is_covering) continue;
