@@ -377,6 +377,7 @@ Command BenchCommand() {
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",
        "mixed_pixel_lines",
+       "mixed_pixel_neighbour_lines",
        "beam",
        "jackets"},
       RunBench};

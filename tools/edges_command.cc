@@ -133,6 +133,7 @@ int RunEdges(const Command& command) {
   MixedPixelOptions mixed_options;
   mixed_options.tolerance = 1e-3 * FLAGS_mixed_pixel_tolerance_mm;
   mixed_options.min_lines = FLAGS_mixed_pixel_lines;
+  mixed_options.neighbour_lines = FLAGS_mixed_pixel_neighbour_lines;
   std::string error;
   if (!mixed_options.IsValid(&error)) return BadInput(command, error);
   size_t mixed_found = 0, mixed_labelled = 0, mixed_right = 0;
@@ -257,7 +258,7 @@ Command EdgesCommand() {
           {"scan", "out_weights", "out_json", "out_ply", "labels", "w_high", "normal_radius_mm",
            "tau_align", "r_min_mm", "r_max_mm", "tau_dot", "region_radius_mm", "tau_region",
            "tau_min", "remove_mixed_pixels", "mixed_pixel_tolerance_mm",
-           "mixed_pixel_lines", "threads"},
+           "mixed_pixel_lines", "mixed_pixel_neighbour_lines", "threads"},
           &RunEdges};
 }
 

@@ -256,6 +256,7 @@ Command FitCommand() {
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",
        "mixed_pixel_lines",
+       "mixed_pixel_neighbour_lines",
        "init",
        "truth",
        "out_joint_states",

@@ -29,7 +29,7 @@ DEFINE_int32(station_rounds, 3,
 DEFINE_int32(covering_rounds, 2,
              "Rounds of the whole-chain refinement without the coverings found at the last "
              "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
-DEFINE_bool(remove_mixed_pixels, false,
+DEFINE_bool(remove_mixed_pixels, true,
             "Remove mixed pixels (a range between a foreground edge and the surface behind it) "
             "from the scans before the edges and the fit.");
 DEFINE_double(mixed_pixel_tolerance_mm, 5.0,
@@ -37,6 +37,9 @@ DEFINE_double(mixed_pixel_tolerance_mm, 5.0,
 DEFINE_int32(mixed_pixel_lines, 3,
              "A mixed pixel is between the surfaces along this many of the 4 grid lines through "
              "it (1-4; fewer finds more, and more noisy surface cells with them).");
+DEFINE_int32(mixed_pixel_neighbour_lines, 1,
+             "... or along this many (0-4; 0: none) beside such a cell: the rest of a band of "
+             "mixed pixels across an edge.");
 DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
@@ -63,6 +66,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
   options->mixed_pixels.min_lines = FLAGS_mixed_pixel_lines;
+  options->mixed_pixels.neighbour_lines = FLAGS_mixed_pixel_neighbour_lines;
   if (!FLAGS_init.empty()) {
     double x = 0.0, y = 0.0, yaw = 0.0;
     EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));

@@ -23,6 +23,7 @@ DECLARE_int32(covering_rounds);
 DECLARE_bool(remove_mixed_pixels);
 DECLARE_double(mixed_pixel_tolerance_mm);
 DECLARE_int32(mixed_pixel_lines);
+DECLARE_int32(mixed_pixel_neighbour_lines);
 DECLARE_string(init);
 
 namespace edgefit::tools {

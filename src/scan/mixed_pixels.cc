@@ -6,9 +6,12 @@
 namespace edgefit {
 
 bool MixedPixelOptions::IsValid(std::string* error) const {
-  if (!(tolerance > 0.0) || !std::isfinite(tolerance) || min_lines < 1 || min_lines > 4 || !(tolerance_per_spacing >= 0.0)) {
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance) || min_lines < 1 || min_lines > 4 ||
+      neighbour_lines < 0 || neighbour_lines > 4 || !(tolerance_per_spacing >= 0.0)) {
     if (error != nullptr) {
-      *error = "mixed pixels: tolerance must be > 0, tolerance_per_spacing >= 0, min_lines in 1..4";
+      *error =
+          "mixed pixels: tolerance must be > 0, tolerance_per_spacing >= 0, min_lines in 1..4, "
+          "neighbour_lines in 0..4";
     }
     return false;
   }
@@ -18,6 +21,8 @@ bool MixedPixelOptions::IsValid(std::string* error) const {
 std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixelOptions& options) {
   std::vector<uint8_t> mixed(scan.size(), 0);
   if (!scan.organized()) return mixed;
+  // Lines along which each cell is mixed.
+  std::vector<uint8_t> line_count(scan.size(), 0);
   const int rows = scan.rows(), cols = scan.cols();
   // Range of a cell, NaN when missing or off the grid.
   auto range = [&](int row, int col) -> double {
@@ -49,7 +54,25 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
         const double from_b = std::isnan(b2) ? b1 : 2.0 * b1 - b2;
         lines += std::abs(r - from_a) > tol && std::abs(r - from_b) > tol;
       }
-      if (lines >= options.min_lines) mixed[scan.Index(row, col)] = 1;
+      line_count[scan.Index(row, col)] = static_cast<uint8_t>(lines);
+    }
+  }
+  // A cell mixed along min_lines, or along neighbour_lines beside one that is.
+  auto is_seed = [&](int row, int col) {
+    return row >= 0 && row < rows && col >= 0 && col < cols &&
+           line_count[scan.Index(row, col)] >= options.min_lines;
+  };
+#pragma omp parallel for schedule(static)
+  for (int col = 0; col < cols; ++col) {
+    for (int row = 0; row < rows; ++row) {
+      const int lines = line_count[scan.Index(row, col)];
+      bool is_mixed = lines >= options.min_lines;
+      if (!is_mixed && options.neighbour_lines > 0 && lines >= options.neighbour_lines) {
+        for (int dr = -1; dr <= 1 && !is_mixed; ++dr) {
+          for (int dc = -1; dc <= 1 && !is_mixed; ++dc) is_mixed = is_seed(row + dr, col + dc);
+        }
+      }
+      mixed[scan.Index(row, col)] = is_mixed;
     }
   }
   return mixed;

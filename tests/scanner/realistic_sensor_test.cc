@@ -2,7 +2,9 @@
 // does what its header claims.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "edgefit/model/composition.h"
 #include "edgefit/model/primitive_meshes.h"
@@ -134,6 +136,37 @@ TEST(MixedPixelRemovalTest, FindsTheLabelledMixedPixelsOfAnEdge) {
   EXPECT_GE(static_cast<double>(right), 0.5 * static_cast<double>(labelled)) << "recall";
   EXPECT_GE(static_cast<double>(far_off_found), 0.9 * static_cast<double>(far_off))
       << "the mixed pixels far off both surfaces";
+}
+
+// The rest of the band a footprint leaves across the edge: its cells step
+// almost linearly from one surface to the other, each on the extrapolation
+// through its neighbour in the band along most lines.
+TEST(MixedPixelRemovalTest, FindsTheRestOfTheBandBesideTheCellsMixedAlongThreeLines) {
+  VirtualScan scan;
+  ASSERT_TRUE(ScanPlateBeforeWall(0.001, &scan).ok());
+  const OrganizedScan& s = scan.scans.scans[0];
+  MixedPixelOptions three_lines;
+  three_lines.neighbour_lines = 0;
+  auto score = [&](const MixedPixelOptions& options, double* precision, double* recall) {
+    const std::vector<uint8_t> found = FindMixedPixels(s, options);
+    size_t labelled = 0, flagged = 0, right = 0;
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (!s.IsValid(i)) continue;
+      const bool label = (scan.labels[0][i] & kMixedPixelFlag) != 0;
+      labelled += label;
+      flagged += found[i];
+      right += label && found[i];
+    }
+    *precision = static_cast<double>(right) / static_cast<double>(std::max<size_t>(flagged, 1));
+    *recall = static_cast<double>(right) / static_cast<double>(std::max<size_t>(labelled, 1));
+  };
+  double precision_3 = 0.0, recall_3 = 0.0, precision = 0.0, recall = 0.0;
+  score(three_lines, &precision_3, &recall_3);
+  score(MixedPixelOptions(), &precision, &recall);
+  std::printf("  3 lines: precision %.3f, recall %.3f; and 1 beside them: %.3f, %.3f\n",
+              precision_3, recall_3, precision, recall);
+  EXPECT_GT(recall, recall_3 + 0.05);
+  EXPECT_GT(precision, 0.9);
 }
 
 // A floor at about 80 degrees incidence, 1 mm range noise: one surface.

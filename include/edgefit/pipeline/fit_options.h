@@ -78,8 +78,11 @@ struct FitOptions {
   // the correspondence search is then given no weights.
   bool uniform_weights = false;
   // Extension: mixed pixels (scan/mixed_pixels.h) removed from the scans
-  // before Sec. 4, so that neither the edges nor any stage sees them.
-  bool remove_mixed_pixels = false;
+  // before Sec. 4, so that neither the edges nor any stage sees them. On 7
+  // realistic scenes of the bundled robot (every effect, jackets) the gun's
+  // jaw came 29 % closer (mean 0.77 -> 0.55 mm), the revolute joints as
+  // before (mean 0.0188 -> 0.0186 deg).
+  bool remove_mixed_pixels = true;
   MixedPixelOptions mixed_pixels;
   // Sec. 4: edges and their weights (w_high lives here).
   EdgeDetectionOptions edges;
