@@ -110,63 +110,54 @@ TEST(BeamFootprintTest, GrazingPlaneIsNotMixed) {
   EXPECT_EQ(mixed, 0u);
 }
 
-// Mixed-pixel removal (scan/mixed_pixels.h) on the plate before the wall,
-// with 1 mm range noise: it finds most labelled mixed pixels and little else.
-TEST(MixedPixelRemovalTest, FindsTheLabelledMixedPixelsOfAnEdge) {
-  VirtualScan scan;
-  ASSERT_TRUE(ScanPlateBeforeWall(0.001, &scan).ok());
+// The cells of a scan of the plate before the wall that `found` flags,
+// against the labels.
+struct MixedPixelCounts {
+  size_t labelled = 0, flagged = 0, right = 0;
+  size_t far_off = 0, far_off_found = 0;  // off both surfaces by more than 2 cm: unmistakable
+  double precision() const { return static_cast<double>(right) / std::max<size_t>(flagged, 1); }
+  double recall() const { return static_cast<double>(right) / std::max<size_t>(labelled, 1); }
+};
+
+MixedPixelCounts CountMixedPixels(const VirtualScan& scan, const MixedPixelOptions& options) {
   const OrganizedScan& s = scan.scans.scans[0];
-  const std::vector<uint8_t> found = FindMixedPixels(s, MixedPixelOptions());
-  size_t labelled = 0, flagged = 0, right = 0, far_off = 0, far_off_found = 0;
+  const std::vector<uint8_t> found = FindMixedPixels(s, options);
+  MixedPixelCounts counts;
   for (size_t i = 0; i < s.size(); ++i) {
     if (!s.IsValid(i)) continue;
     const bool label = (scan.labels[0][i] & kMixedPixelFlag) != 0;
-    labelled += label;
-    flagged += found[i];
-    right += label && found[i];
-    // Off both surfaces by more than 2 cm: unmistakable.
+    counts.labelled += label;
+    counts.flagged += found[i];
+    counts.right += label && found[i];
     const double x = s.PointWorld(i).x();
     if (label && x > 4.02 + 0.02 && x < 4.5 - 0.02) {
-      ++far_off;
-      far_off_found += found[i];
+      ++counts.far_off;
+      counts.far_off_found += found[i];
     }
   }
-  ASSERT_GT(labelled, 300u);
-  EXPECT_GE(static_cast<double>(right), 0.9 * static_cast<double>(flagged)) << "precision";
-  EXPECT_GE(static_cast<double>(right), 0.5 * static_cast<double>(labelled)) << "recall";
-  EXPECT_GE(static_cast<double>(far_off_found), 0.9 * static_cast<double>(far_off))
-      << "the mixed pixels far off both surfaces";
+  return counts;
 }
 
-// The rest of the band a footprint leaves across the edge: its cells step
-// almost linearly from one surface to the other, each on the extrapolation
-// through its neighbour in the band along most lines.
-TEST(MixedPixelRemovalTest, FindsTheRestOfTheBandBesideTheCellsMixedAlongThreeLines) {
+// Mixed-pixel removal (scan/mixed_pixels.h) on the plate before the wall,
+// with 1 mm range noise: it finds most labelled mixed pixels and little
+// else. The cells mixed along 3 lines alone find fewer: the rest of the
+// band a footprint leaves across the edge steps almost linearly from one
+// surface to the other, each cell on the extrapolation through its
+// neighbour in the band along most lines.
+TEST(MixedPixelRemovalTest, FindsTheLabelledMixedPixelsOfAnEdge) {
   VirtualScan scan;
   ASSERT_TRUE(ScanPlateBeforeWall(0.001, &scan).ok());
-  const OrganizedScan& s = scan.scans.scans[0];
+  const MixedPixelCounts counts = CountMixedPixels(scan, MixedPixelOptions());
   MixedPixelOptions three_lines;
   three_lines.neighbour_lines = 0;
-  auto score = [&](const MixedPixelOptions& options, double* precision, double* recall) {
-    const std::vector<uint8_t> found = FindMixedPixels(s, options);
-    size_t labelled = 0, flagged = 0, right = 0;
-    for (size_t i = 0; i < s.size(); ++i) {
-      if (!s.IsValid(i)) continue;
-      const bool label = (scan.labels[0][i] & kMixedPixelFlag) != 0;
-      labelled += label;
-      flagged += found[i];
-      right += label && found[i];
-    }
-    *precision = static_cast<double>(right) / static_cast<double>(std::max<size_t>(flagged, 1));
-    *recall = static_cast<double>(right) / static_cast<double>(std::max<size_t>(labelled, 1));
-  };
-  double precision_3 = 0.0, recall_3 = 0.0, precision = 0.0, recall = 0.0;
-  score(three_lines, &precision_3, &recall_3);
-  score(MixedPixelOptions(), &precision, &recall);
+  const MixedPixelCounts three = CountMixedPixels(scan, three_lines);
   std::printf("  3 lines: precision %.3f, recall %.3f; and 1 beside them: %.3f, %.3f\n",
-              precision_3, recall_3, precision, recall);
-  EXPECT_GT(recall, recall_3 + 0.05);
-  EXPECT_GT(precision, 0.9);
+              three.precision(), three.recall(), counts.precision(), counts.recall());
+  ASSERT_GT(counts.labelled, 300u);
+  EXPECT_GT(counts.precision(), 0.9);
+  EXPECT_GT(counts.recall(), three.recall() + 0.05);
+  EXPECT_GE(static_cast<double>(counts.far_off_found), 0.9 * static_cast<double>(counts.far_off))
+      << "the mixed pixels far off both surfaces";
 }
 
 // A floor at about 80 degrees incidence, 1 mm range noise: one surface.
