@@ -29,7 +29,7 @@ DEFINE_int32(station_rounds, 3,
 DEFINE_int32(covering_rounds, 2,
              "Rounds of the whole-chain refinement without the coverings found at the last "
              "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
-DEFINE_bool(remove_mixed_pixels, true,
+DEFINE_bool(remove_mixed_pixels, false,
             "Remove mixed pixels (a range between a foreground edge and the surface behind it) "
             "from the scans before the edges and the fit.");
 DEFINE_double(mixed_pixel_tolerance_mm, 5.0,

@@ -78,11 +78,13 @@ struct FitOptions {
   // the correspondence search is then given no weights.
   bool uniform_weights = false;
   // Extension: mixed pixels (scan/mixed_pixels.h) removed from the scans
-  // before Sec. 4, so that neither the edges nor any stage sees them. On 7
-  // realistic scenes of the bundled robot (every effect, jackets) the gun's
-  // jaw came 29 % closer (mean 0.77 -> 0.55 mm), the revolute joints as
-  // before (mean 0.0188 -> 0.0186 deg).
-  bool remove_mixed_pixels = true;
+  // before Sec. 4, so that neither the edges nor any stage sees them. Off:
+  // on realistic scans with jackets (20 postures each) it took the KUKA's
+  // revolute mean from 0.0199 to 0.0232 deg (and flipped one wrist, said
+  // not ok) and the ABB's from 0.0192 to 0.0209 deg; the bundled robot's
+  // stayed (0.0178 -> 0.0175 deg, 23 postures) and its gun's jaw came a
+  // quarter closer (mean 0.45 -> 0.34 mm on 22 of them).
+  bool remove_mixed_pixels = false;
   MixedPixelOptions mixed_pixels;
   // Sec. 4: edges and their weights (w_high lives here).
   EdgeDetectionOptions edges;
