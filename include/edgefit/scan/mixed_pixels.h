@@ -56,7 +56,7 @@ struct MixedPixelOptions {
   // almost linearly: a cell in the band lies on the extrapolation through
   // its neighbour in the band along most lines and is mixed along only one.
   // On a realistic scan of the bundled robot (every effect, jackets,
-  // 1.7 mm; edgefit edges --labels) min_lines 3 alone found 42 % of the
+  // 1.7 mm; against its labels) min_lines 3 alone found 42 % of the
   // labelled mixed pixels at precision 0.88 (52 % at 0.98 around the gun's
   // electrode); with 1 line beside them 55 % at 0.63 (72 % at 0.88 there),
   // a 1-line test everywhere 65 % at 0.14 (noisy dark and grazing cells).
