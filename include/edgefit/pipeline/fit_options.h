@@ -79,9 +79,9 @@ struct FitOptions {
   bool uniform_weights = false;
   // Extension: mixed pixels (scan/mixed_pixels.h) removed from the scans
   // before Sec. 4, so that neither the edges nor any stage sees them. Off:
-  // on realistic scans with jackets (20 postures each) it took the KUKA's
-  // revolute mean from 0.0199 to 0.0232 deg (and flipped one wrist, said
-  // not ok) and the ABB's from 0.0192 to 0.0209 deg; the bundled robot's
+  // on realistic scans with jackets (20 postures each) it flipped one of
+  // the KUKA's wrists (said not ok) and took its revolute mean on the other
+  // 19 from 0.0199 to 0.0232 deg, the ABB's from 0.0192 to 0.0209 deg; the bundled robot's
   // stayed (0.0178 -> 0.0175 deg, 23 postures) and its gun's jaw came a
   // quarter closer (mean 0.45 -> 0.34 mm on 22 of them).
   bool remove_mixed_pixels = false;
