@@ -373,6 +373,7 @@ Command BenchCommand() {
        "sensors",
        "align_stations",
        "station_rounds",
+       "station_max_covered_share",
        "covering_rounds",
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",

@@ -252,6 +252,7 @@ Command FitCommand() {
        "refine_chain",
        "align_stations",
        "station_rounds",
+       "station_max_covered_share",
        "covering_rounds",
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",

@@ -26,6 +26,9 @@ DEFINE_int32(station_rounds, 3,
              "Registrations of the stations: after the first (at the sequential fit), the chain "
              "is refined on the corrected stations and they are registered again there, until "
              "their corrections settle or this many were made; 1: once.");
+DEFINE_double(station_max_covered_share, 0.2,
+              "A link with more than this share of its matched cells covered (a jacket) is left "
+              "out of the stations' registration; 1: none is.");
 DEFINE_int32(covering_rounds, 2,
              "Rounds of the whole-chain refinement without the coverings found at the last "
              "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
@@ -62,6 +65,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->refinement.chain.refine = FLAGS_refine_chain;
   options->stations.align = FLAGS_align_stations;
   options->stations.rounds = FLAGS_station_rounds;
+  options->stations.max_covered_share = FLAGS_station_max_covered_share;
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;

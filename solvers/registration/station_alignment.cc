@@ -42,6 +42,8 @@ bool StationAlignmentOptions::IsValid(std::string* error) const {
     *error = "station alignment: the prior's sigmas must be positive";
   } else if (rounds < 1) {
     *error = "station alignment: need rounds >= 1";
+  } else if (!(max_covered_share >= 0.0 && max_covered_share <= 1.0)) {
+    *error = "station alignment: max_covered_share must be in [0, 1]";
   } else {
     return true;
   }
@@ -52,15 +54,18 @@ Status AlignStationsToModel(const KinematicModel& model,
                             const std::vector<SurfaceSamples>& link_samples,
                             const Pose& T_world_base, const std::vector<double>& q,
                             const std::vector<std::vector<uint8_t>>* excluded,
+                            const std::vector<uint8_t>& links_left_out,
                             const StationAlignmentOptions& options, ScanSet* scans,
                             StationAlignmentSummary* summary) {
   const auto start = std::chrono::steady_clock::now();
   std::string error;
   if (!options.IsValid(&error)) return Status::Error(error);
-  if (link_samples.size() != model.links().size() || q.size() != model.joints().size()) {
+  if (link_samples.size() != model.links().size() || q.size() != model.joints().size() ||
+      (!links_left_out.empty() && links_left_out.size() != model.links().size())) {
     return Status::Error("station alignment: samples or joint values do not match the model");
   }
   *summary = StationAlignmentSummary();
+  summary->links_left_out = links_left_out;
   const size_t n = scans->scans.size();
   if (!options.align || n < 2) return Status::Ok();
 
@@ -72,6 +77,7 @@ Status AlignStationsToModel(const KinematicModel& model,
   for (size_t l = 0; l < link_samples.size(); ++l) {
     const SurfaceSamples& samples = link_samples[l];
     if (samples.normals.size() != samples.points.size()) continue;
+    if (!links_left_out.empty() && links_left_out[l]) continue;
     for (size_t i = 0; i < samples.points.size(); ++i) {
       const Eigen::Vector3d p = T_world_link[l] * samples.points[i].cast<double>();
       points.push_back(p.cast<float>());
@@ -168,6 +174,17 @@ Status AlignStationsToModel(const KinematicModel& model,
   return Status::Ok();
 }
 
+std::vector<uint8_t> CoveredLinks(const std::vector<size_t>& link_matched,
+                                  const std::vector<size_t>& link_covered,
+                                  const StationAlignmentOptions& options) {
+  std::vector<uint8_t> left_out(link_matched.size(), 0);
+  for (size_t l = 0; l < link_matched.size() && l < link_covered.size(); ++l) {
+    left_out[l] = static_cast<double>(link_covered[l]) >
+                  options.max_covered_share * static_cast<double>(link_matched[l]);
+  }
+  return left_out;
+}
+
 double LargestCorrection(const StationAlignmentSummary& summary) {
   double largest = 0.0;
   for (const StationCorrection& c : summary.stations) {
@@ -200,11 +217,13 @@ std::string StationAlignmentLine(const StationAlignmentSummary& summary) {
     rotation = std::max(rotation, c.rotation);
     before = std::max(before, c.rms_before);
   }
-  char line[200];
+  int left_out = 0;
+  for (const uint8_t l : summary.links_left_out) left_out += l;
+  char line[240];
   std::snprintf(line, sizeof(line),
-                "stations: %zu aligned to the model (point-to-plane RMS up to %.2f mm before), "
-                "largest correction %.2f mm, %.4f deg, %.2f s",
-                summary.stations.size(), 1e3 * before, 1e3 * translation,
+                "stations: %zu aligned to the model (point-to-plane RMS up to %.2f mm before; %d "
+                "links mostly covered left out), largest correction %.2f mm, %.4f deg, %.2f s",
+                summary.stations.size(), 1e3 * before, left_out, 1e3 * translation,
                 rotation * 180.0 / M_PI, summary.seconds);
   return line;
 }

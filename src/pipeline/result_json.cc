@@ -88,6 +88,10 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
         {"share", static_cast<double>(coverings.link_covered[l]) /
                       static_cast<double>(std::max<size_t>(1, coverings.link_matched[l]))}};
   }
+  json left_out = json::array();
+  for (size_t l = 0; l < fit.stations.links_left_out.size(); ++l) {
+    if (fit.stations.links_left_out[l]) left_out.push_back(model.links()[l].name);
+  }
   json stations = json::array();
   for (const StationCorrection& c : fit.stations.stations) {
     stations.push_back({{"correction_m", c.translation},
@@ -108,6 +112,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
           {"stations",
            {{"aligned", !fit.stations.stations.empty()},
             {"rounds", fit.stations.rounds},
+            {"links_left_out", left_out},
             {"corrections", stations}}},
           {"timing_s",
            {{"edges", fit.timings.edges},

@@ -27,7 +27,8 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
                                                options, say, result, &covered));
     }
     // Coverings (jackets) would pull a station towards the side it sees them
-    // on: found at this estimate and left out.
+    // on: found at this estimate and left out, and with them the links they
+    // mostly cover.
     CellMask covered;
     CoveringSummary coverings;
     const bool find_coverings = options.refinement.coverings.rounds > 0;
@@ -45,9 +46,12 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
         aligned->scans[k].set_T_world_scanner(scans.scans[k].T_world_scanner());
       }
     }
+    const std::vector<uint8_t> left_out =
+        find_coverings ? CoveredLinks(coverings.link_matched, coverings.link_covered, stations)
+                       : std::vector<uint8_t>();
     EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(model, cad.chain, result->T_world_base, result->q,
-                                                 find_coverings ? &covered : nullptr, stations,
-                                                 aligned, &result->stations));
+                                                 find_coverings ? &covered : nullptr, left_out,
+                                                 stations, aligned, &result->stations));
     result->stations.rounds = round + 1;
     say(StationAlignmentLine(result->stations));
     // The stations agree as written, or their corrections settled.

@@ -20,6 +20,7 @@
 #include "edgefit/scanner/asset_scan.h"
 #include "edgefit/scanner/truth.h"
 #include "model/bundled_robot_test_util.h"
+#include "solvers/refinement/coverings.h"
 #include "solvers/registration/station_alignment.h"
 
 namespace edgefit {
@@ -74,6 +75,12 @@ const RealisticScene& GetScene() {
 // Station residuals alone, not fitted.
 const RealisticScene& GetStationScene() {
   static RealisticScene* scene = MakeScene("stations", false);
+  return *scene;
+}
+
+// Station residuals and jackets, not fitted.
+const RealisticScene& GetJacketStationScene() {
+  static RealisticScene* scene = MakeScene("stations+jackets", false);
   return *scene;
 }
 
@@ -178,7 +185,7 @@ TEST(RealisticFitTest, StationsRegisteredToTheModelAgree) {
   const std::vector<SurfaceSamples> samples = SampleModelSurfaces(s.model, sampling);
   ScanSet aligned = s.scan.scans;
   StationAlignmentSummary summary;
-  ASSERT_TRUE(AlignStationsToModel(s.model, samples, s.T_world_base, s.q, nullptr,
+  ASSERT_TRUE(AlignStationsToModel(s.model, samples, s.T_world_base, s.q, nullptr, {},
                                    StationAlignmentOptions(), &aligned, &summary)
                   .ok());
   std::vector<Pose> written, corrected;
@@ -197,6 +204,60 @@ TEST(RealisticFitTest, StationsRegisteredToTheModelAgree) {
                   1e3 * t_written, r_written / kDeg, 1e3 * t_aligned, r_aligned / kDeg);
       EXPECT_LT(t_aligned, 0.25 * t_written);
       EXPECT_LT(r_aligned, 0.5 * r_written);
+    }
+  }
+}
+
+// The links mostly under a jacket are left out of the stations'
+// registration (the jackets' fringes, too close to the CAD to be found as
+// coverings, pulled the stations of a FANUC bench scene 7-8 mm and 0.1 deg
+// apart at the fit's estimates), and the rest of the model brings the
+// stations together as well. At the true pose and 4 mm the bundled robot's
+// jackets do not pull them: that side is printed, not asserted.
+TEST(RealisticFitTest, StationsAgreeWithTheJacketedLinksLeftOut) {
+  const RealisticScene& s = GetJacketStationScene();
+  SamplingOptions sampling;
+  sampling.spacing = 0.004;
+  const std::vector<SurfaceSamples> samples = SampleModelSurfaces(s.model, sampling);
+  CorrespondenceSearch search(&s.scan.scans, nullptr);
+  CellMask covered;
+  CoveringSummary coverings;
+  ASSERT_TRUE(FindCoverings(s.model, s.scan.scans, &search, samples, s.T_world_base, s.q,
+                            CoveringOptions(), true, &covered, &coverings)
+                  .ok());
+  const StationAlignmentOptions options;
+  const std::vector<uint8_t> left_out =
+      CoveredLinks(coverings.link_matched, coverings.link_covered, options);
+  std::vector<std::string> names;
+  for (size_t l = 0; l < left_out.size(); ++l) {
+    if (left_out[l]) names.push_back(s.model.links()[l].name);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"link_2", "link_4"}));
+
+  for (const bool leave_out : {false, true}) {
+    ScanSet aligned = s.scan.scans;
+    StationAlignmentSummary summary;
+    ASSERT_TRUE(AlignStationsToModel(s.model, samples, s.T_world_base, s.q, &covered,
+                                     leave_out ? left_out : std::vector<uint8_t>(), options,
+                                     &aligned, &summary)
+                    .ok());
+    std::vector<Pose> written, corrected;
+    for (size_t k = 0; k < aligned.scans.size(); ++k) {
+      written.push_back(s.scan.scans.scans[k].T_world_scanner());
+      corrected.push_back(aligned.scans[k].T_world_scanner());
+    }
+    for (size_t i = 0; i < 3; ++i) {
+      for (size_t j = i + 1; j < 3; ++j) {
+        double t_written = 0, r_written = 0, t_aligned = 0, r_aligned = 0;
+        RelativeError(written, s.T_world_scanners, i, j, &t_written, &r_written);
+        RelativeError(corrected, s.T_world_scanners, i, j, &t_aligned, &r_aligned);
+        std::printf("  stations %zu-%zu: %.3f mm %.4f deg written, %.3f mm %.4f deg aligned%s\n",
+                    i, j, 1e3 * t_written, r_written / kDeg, 1e3 * t_aligned, r_aligned / kDeg,
+                    leave_out ? " without the jacketed links" : "");
+        if (!leave_out) continue;
+        EXPECT_LT(t_aligned, 0.5 * t_written);
+        EXPECT_LT(r_aligned, 0.5 * r_written);
+      }
     }
   }
 }
