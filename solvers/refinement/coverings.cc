@@ -65,11 +65,7 @@ bool CoveringOptions::IsValid(std::string* error) const {
 
 bool CoveringsHideALink(const CoveringSummary& summary, const CoveringOptions& options) {
   for (size_t l = 0; l < summary.link_matched.size(); ++l) {
-    if (summary.link_matched[l] > 0 &&
-        static_cast<double>(summary.link_covered[l]) >=
-            options.refit_share * static_cast<double>(summary.link_matched[l])) {
-      return true;
-    }
+    if (summary.link_matched[l] > 0 && summary.Share(l) >= options.refit_share) return true;
   }
   return false;
 }

@@ -84,6 +84,19 @@ struct CoveringSummary {
   // Per link (model.links() order): cells whose closest sample is on it,
   // and how many of those are coverings.
   std::vector<size_t> link_matched, link_covered;
+
+  // The covered share of link l's matched cells (0 when none matched).
+  double Share(size_t l) const {
+    return link_matched[l] == 0
+               ? 0.0
+               : static_cast<double>(link_covered[l]) / static_cast<double>(link_matched[l]);
+  }
+  // Per link, 1 where more than `share` of its matched cells are covered.
+  std::vector<uint8_t> LinksCoveredOver(double share) const {
+    std::vector<uint8_t> over(link_matched.size(), 0);
+    for (size_t l = 0; l < over.size(); ++l) over[l] = Share(l) > share;
+    return over;
+  }
 };
 
 // Does some link have at least refit_share of its matched cells covered?

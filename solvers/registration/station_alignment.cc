@@ -174,17 +174,6 @@ Status AlignStationsToModel(const KinematicModel& model,
   return Status::Ok();
 }
 
-std::vector<uint8_t> CoveredLinks(const std::vector<size_t>& link_matched,
-                                  const std::vector<size_t>& link_covered,
-                                  const StationAlignmentOptions& options) {
-  std::vector<uint8_t> left_out(link_matched.size(), 0);
-  for (size_t l = 0; l < link_matched.size() && l < link_covered.size(); ++l) {
-    left_out[l] = static_cast<double>(link_covered[l]) >
-                  options.max_covered_share * static_cast<double>(link_matched[l]);
-  }
-  return left_out;
-}
-
 double LargestCorrection(const StationAlignmentSummary& summary) {
   double largest = 0.0;
   for (const StationCorrection& c : summary.stations) {

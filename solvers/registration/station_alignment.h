@@ -61,7 +61,8 @@ struct StationAlignmentOptions {
   // did not agree (the gun's jaw settled centimetres off on them).
   double refit_correction = 0.0005;
   // A link with more than this share of its matched cells covered (a
-  // jacket, CoveringSummary) is left out of the registration: the fringe of
+  // jacket, CoveringSummary::LinksCoveredOver) is left out of the
+  // registration (the pipeline's AlignStationsStage): the fringe of
   // a jacket, a millimetre or two off the CAD where it starts or thins, is
   // not found as a covering but lies within the gates and pulls each
   // station towards the side it sees it on. FANUC M-900iB with the X16005
@@ -120,12 +121,6 @@ Status AlignStationsToModel(const KinematicModel& model,
                             const std::vector<uint8_t>& links_left_out,
                             const StationAlignmentOptions& options, ScanSet* scans,
                             StationAlignmentSummary* summary);
-
-// The links whose covered share of matched cells exceeds
-// options.max_covered_share (per link, 1 to leave out).
-std::vector<uint8_t> CoveredLinks(const std::vector<size_t>& link_matched,
-                                  const std::vector<size_t>& link_covered,
-                                  const StationAlignmentOptions& options);
 
 // The largest correction of any station: its origin's shift plus its
 // rotation times 5 m [m].

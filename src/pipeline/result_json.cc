@@ -85,8 +85,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
     covered_links[model.links()[l].name] = {
         {"matched", coverings.link_matched[l]},
         {"covered", coverings.link_covered[l]},
-        {"share", static_cast<double>(coverings.link_covered[l]) /
-                      static_cast<double>(std::max<size_t>(1, coverings.link_matched[l]))}};
+        {"share", coverings.Share(l)}};
   }
   json left_out = json::array();
   for (size_t l = 0; l < fit.stations.links_left_out.size(); ++l) {

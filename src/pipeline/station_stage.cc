@@ -47,7 +47,7 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
       }
     }
     const std::vector<uint8_t> left_out =
-        find_coverings ? CoveredLinks(coverings.link_matched, coverings.link_covered, stations)
+        find_coverings ? coverings.LinksCoveredOver(stations.max_covered_share)
                        : std::vector<uint8_t>();
     EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(model, cad.chain, result->T_world_base, result->q,
                                                  find_coverings ? &covered : nullptr, left_out,

@@ -83,7 +83,9 @@ struct FitOptions {
   // the KUKA's wrists (said not ok) and took its revolute mean on the other
   // 19 from 0.0199 to 0.0232 deg, the ABB's from 0.0192 to 0.0209 deg; the bundled robot's
   // stayed (0.0178 -> 0.0175 deg, 23 postures) and its gun's jaw came a
-  // quarter closer (mean 0.45 -> 0.34 mm on 22 of them).
+  // quarter closer (mean 0.45 -> 0.34 mm on 22 of them). Measured before
+  // the jacketed links were left out of the stations' registration; with
+  // that, the KUKA's flipped wrist is still wrong (96.7 deg, said not ok).
   bool remove_mixed_pixels = false;
   MixedPixelOptions mixed_pixels;
   // Sec. 4: edges and their weights (w_high lives here).
