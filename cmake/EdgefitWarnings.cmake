@@ -7,7 +7,16 @@ function(edgefit_set_warnings target)
   endif()
 endfunction()
 
-if(EDGEFIT_SANITIZE)
+if(EDGEFIT_BUILD_FUZZERS)
+  # Every library instrumented for libFuzzer's coverage, ASan and UBSan;
+  # the harnesses link the fuzzer's main (fuzz/CMakeLists.txt). Clang only.
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "EDGEFIT_BUILD_FUZZERS needs clang (CXX=clang++; scripts/fuzz.sh)")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+                      -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+elseif(EDGEFIT_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   add_link_options(-fsanitize=address,undefined)
 endif()

@@ -11,6 +11,7 @@ packages=(
   liburdfdom-dev liburdfdom-headers-dev libassimp-dev libnanoflann-dev
   libomp-dev libembree-dev nlohmann-json3-dev libfast-float-dev libtinyxml2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev
 )
 if [[ "${EDGEFIT_WITH_CLOUDCOMPARE:-1}" == "1" ]]; then
   packages+=(cloudcompare xvfb)

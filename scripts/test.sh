@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds (warnings are errors) and runs the whole
-# suite with ctest. With --sanitize: the same under ASan + UBSan.
+# suite with ctest, then each reader's libFuzzer harness for a few seconds
+# on the kept corpus (scripts/fuzz.sh). With --sanitize: the suite under
+# ASan + UBSan (the harnesses run under them already).
 #   ./scripts/test.sh [--sanitize] [ctest args...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,5 +18,5 @@ else
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 fi
-cd "$build_dir"
-ctest --output-on-failure -j"$(nproc)" "$@"
+(cd "$build_dir" && ctest --output-on-failure -j"$(nproc)" "$@")
+if [[ $mode == release ]]; then ./scripts/fuzz.sh all 5; fi

@@ -120,6 +120,14 @@ Status KinematicModel::Finalize() {
       return Status::Error("joint '" + joint.name + "': bad mimic reference");
     }
   }
+  for (const Joint& joint : joints_) {  // a chain of mimics must end at a joint of its own
+    int steps = 0;
+    for (int m = joint.mimic_joint; m >= 0; m = joints_[static_cast<size_t>(m)].mimic_joint) {
+      if (++steps > num_joints) {
+        return Status::Error("joint '" + joint.name + "': its mimic joints form a cycle");
+      }
+    }
+  }
   for (size_t c = 0; c < loop_closures_.size(); ++c) {
     const LoopClosure& closure = loop_closures_[c];
     if (closure.link_a < 0 || closure.link_a >= num_links || closure.link_b < 0 ||

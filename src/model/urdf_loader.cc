@@ -3,6 +3,7 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
@@ -66,7 +67,9 @@ Status ParseWithUrdfdom(const std::string& xml, urdf::ModelInterfaceSharedPtr* u
     return Status::Error(std::string("urdfdom: ") + e.what());
   }
   console_bridge::restorePreviousOutputHandler();
-  if (*urdf_model == nullptr) {
+  // urdfdom skips some elements it cannot parse (a box of size "inf") and
+  // returns the rest: an error it logged fails the load all the same.
+  if (*urdf_model == nullptr || !handler.first_error().empty()) {
     return Status::Error("not a valid URDF: " +
                          (handler.first_error().empty() ? "urdfdom failed" : handler.first_error()));
   }
@@ -80,12 +83,16 @@ Status LoadVisual(const urdf::Visual& urdf_visual, const std::string& urdf_path,
   visual->T_link_visual = ToPose(urdf_visual.origin);
   const urdf::Geometry* geometry = urdf_visual.geometry.get();
   if (geometry == nullptr) return Status::Error("visual without geometry");
+  auto size_ok = [](double x) { return std::isfinite(x) && x > 0.0; };
   TriangleMesh mesh;
   switch (geometry->type) {
     case urdf::Geometry::BOX: {
       const urdf::Vector3& d = static_cast<const urdf::Box*>(geometry)->dim;
       visual->kind = Visual::Kind::kBox;
       visual->box_size = Eigen::Vector3d(d.x, d.y, d.z);
+      if (!size_ok(d.x) || !size_ok(d.y) || !size_ok(d.z)) {
+        return Status::Error("box size must be three finite lengths > 0");
+      }
       if (options.load_meshes) mesh = MakeBoxMesh(visual->box_size);
       break;
     }
@@ -94,12 +101,16 @@ Status LoadVisual(const urdf::Visual& urdf_visual, const std::string& urdf_path,
       visual->kind = Visual::Kind::kCylinder;
       visual->radius = c->radius;
       visual->length = c->length;
+      if (!size_ok(c->radius) || !size_ok(c->length)) {
+        return Status::Error("cylinder radius and length must be finite and > 0");
+      }
       if (options.load_meshes) mesh = MakeCylinderMesh(c->radius, c->length, options.cylinder_segments);
       break;
     }
     case urdf::Geometry::SPHERE: {
       visual->kind = Visual::Kind::kSphere;
       visual->radius = static_cast<const urdf::Sphere*>(geometry)->radius;
+      if (!size_ok(visual->radius)) return Status::Error("sphere radius must be finite and > 0");
       if (options.load_meshes) mesh = MakeSphereMesh(visual->radius, options.sphere_subdivisions);
       break;
     }
@@ -107,6 +118,9 @@ Status LoadVisual(const urdf::Visual& urdf_visual, const std::string& urdf_path,
       const auto* m = static_cast<const urdf::Mesh*>(geometry);
       visual->kind = Visual::Kind::kMesh;
       visual->mesh_scale = Eigen::Vector3d(m->scale.x, m->scale.y, m->scale.z);
+      if (!visual->mesh_scale.allFinite() || (visual->mesh_scale.array() == 0.0).any()) {
+        return Status::Error("mesh '" + m->filename + "': scale must be finite and non-zero");
+      }
       EDGEFIT_RETURN_IF_ERROR(
           ResolveMeshPath(m->filename, urdf_path, package_dirs, &visual->mesh_path));
       if (!options.load_meshes) break;
@@ -126,16 +140,10 @@ Status LoadVisual(const urdf::Visual& urdf_visual, const std::string& urdf_path,
   return Status::Ok();
 }
 
-Status LoadModel(const std::string& urdf_path, const ModelLoadOptions& options,
-                 KinematicModel* model) {
+Status ParseModel(const std::string& xml, const std::string& urdf_path,
+                  const ModelLoadOptions& options, KinematicModel* model) {
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("bad load options: " + error);
-  std::ifstream file(urdf_path, std::ios::binary);
-  if (!file) return Status::Error("cannot open file");
-  std::stringstream buffer;
-  buffer << file.rdbuf();
-  const std::string xml = buffer.str();
-
   UrdfXmlScan scan;
   EDGEFIT_RETURN_IF_ERROR(ScanUrdfXml(xml, &scan));
   urdf::ModelInterfaceSharedPtr urdf_model;
@@ -235,9 +243,18 @@ std::vector<std::string> PackageDirs(const ModelLoadOptions& options) {
   return package_dirs;
 }
 
+Status ParseKinematicModel(const std::string& xml, const std::string& urdf_path,
+                           const ModelLoadOptions& options, KinematicModel* model) {
+  return ParseModel(xml, urdf_path, options, model).WithContext(urdf_path);
+}
+
 Status LoadKinematicModel(const std::string& urdf_path, const ModelLoadOptions& options,
                           KinematicModel* model) {
-  return LoadModel(urdf_path, options, model).WithContext(urdf_path);
+  std::ifstream file(urdf_path, std::ios::binary);
+  if (!file) return Status::Error("cannot open file").WithContext(urdf_path);
+  std::stringstream buffer;
+  buffer << file.rdbuf();
+  return ParseKinematicModel(buffer.str(), urdf_path, options, model);
 }
 
 }  // namespace edgefit

@@ -20,7 +20,9 @@ struct UrdfXmlScan {
 };
 
 // Reads element order, joint types (unsupported types are an error naming
-// the joint) and <loop_closure> elements from the URDF text `xml`.
+// the joint) and <loop_closure> elements from the URDF text `xml`, and
+// checks that the joints form a tree (no link its own parent or the child
+// of two joints, no cycle; an error naming the joint or link).
 Status ScanUrdfXml(const std::string& xml, UrdfXmlScan* scan);
 
 }  // namespace edgefit

@@ -48,6 +48,11 @@ std::vector<std::string> PackageDirs(const ModelLoadOptions& options);
 Status LoadKinematicModel(const std::string& urdf_path, const ModelLoadOptions& options,
                           KinematicModel* model);
 
+// The same for URDF text held in memory: `urdf_path` names it in messages
+// and Link::source, and relative mesh names resolve against its folder.
+Status ParseKinematicModel(const std::string& xml, const std::string& urdf_path,
+                           const ModelLoadOptions& options, KinematicModel* model);
+
 }  // namespace edgefit
 
 #endif  // EDGEFIT_MODEL_URDF_LOADER_H_
