@@ -12,6 +12,7 @@ edgefit_add_test(solvers_test
     solvers/height_map_test.cc
     solvers/symmetry_axis_test.cc
     solvers/body_test.cc
+    solvers/observability_test.cc
     solvers/base_hypotheses_test.cc
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
 edgefit_add_test(solvers_scan_test SINGLE_PROCESS

@@ -48,6 +48,7 @@ void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, boo
     }
   }
   if (joints.empty()) return;
+  bool unobservable = false;
   std::printf("\n%s (%s):\n\n| posture | accessories | weights |%s", asset.c_str(),
               prismatic ? "mm" : "degrees", labelled ? " settings |" : "");
   for (const std::string& j : joints) std::printf(" %s |", j.c_str());
@@ -61,10 +62,17 @@ void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, boo
     if (labelled) std::printf(" %s |", run.label.c_str());
     for (const std::string& j : joints) {
       for (const JointError& e : run.result.errors.joints) {
-        if (e.name == j) std::printf(" %.4f |", prismatic ? 1e3 * e.error : e.error / kDeg);
+        if (e.name != j) continue;
+        const double error = prismatic ? 1e3 * e.error : e.error / kDeg;
+        std::printf(e.unobservable ? " (%.4f) |" : " %.4f |", error);
+        unobservable = unobservable || e.unobservable;
       }
     }
     std::printf("\n");
+  }
+  if (unobservable) {
+    std::printf("\nIn brackets: joints the fit called unobservable (reported by convention, not "
+                "scored).\n");
   }
 }
 
@@ -129,7 +137,7 @@ void PrintSummary(const std::vector<Run>& runs) {
     for (const Run* run : groups[key]) {
       const BenchResult& r = run->result;
       for (const JointError& e : r.errors.joints) {
-        if (!e.independent) continue;
+        if (!e.independent || e.unobservable) continue;
         (e.prismatic ? prismatic : revolute)
             .push_back(e.prismatic ? 1e3 * e.error : e.error / kDeg);
       }
@@ -151,11 +159,15 @@ void PrintSummary(const std::vector<Run>& runs) {
 }
 
 nlohmann::json RunJson(const Run& run) {
-  nlohmann::json joints = nlohmann::json::object(), prismatic = nlohmann::json::array();
+  nlohmann::json joints = nlohmann::json::object(), prismatic = nlohmann::json::array(),
+                 unobservable = nlohmann::json::object(), verdicts = nlohmann::json::object();
   for (const JointError& e : run.result.errors.joints) {
     if (!e.independent) continue;
-    joints[e.name] = e.error;
+    (e.unobservable ? unobservable : joints)[e.name] = e.error;
     if (e.prismatic) prismatic.push_back(e.name);
+  }
+  for (const BodyQuality& b : run.result.bodies) {
+    if (!b.joint.empty()) verdicts[b.joint] = JointVerdictName(b.verdict);
   }
   const FitTimings& t = run.result.timings;
   return {{"asset", run.asset},
@@ -175,7 +187,9 @@ nlohmann::json RunJson(const Run& run) {
             {"search", run.fit.search},
             {"refine_chain", run.fit.refine_chain}}},
           {"points", run.result.points},
-          {"joint_errors", joints},  // independent joints [rad] or [m]
+          {"joint_errors", joints},  // observable independent joints [rad] or [m]
+          {"unobservable_joint_errors", unobservable},  // reported by convention
+          {"joint_verdicts", verdicts},
           {"prismatic_joints", prismatic},
           {"base_translation_m", run.result.errors.base_translation},
           {"base_rotation_rad", run.result.errors.base_rotation},

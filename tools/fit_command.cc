@@ -50,8 +50,20 @@ namespace {
 
 using nlohmann::json;
 
-std::string JointStatesYaml(const KinematicModel& model, const std::vector<double>& q) {
-  std::ostringstream names, positions;
+// Per joint (model order) its verdict, "" for joints without one.
+std::vector<std::string> JointVerdictNotes(const KinematicModel& model, const FitResult& fit) {
+  std::vector<std::string> notes(model.joints().size());
+  for (const BodyQuality& b : fit.bodies) {
+    if (!b.joint.empty()) {
+      notes[static_cast<size_t>(model.JointIndex(b.joint))] = JointVerdictName(b.verdict);
+    }
+  }
+  return notes;
+}
+
+std::string JointStatesYaml(const KinematicModel& model, const std::vector<double>& q,
+                            const std::vector<std::string>& notes) {
+  std::ostringstream names, positions, verdicts;
   bool first = true;
   for (size_t j = 0; j < model.joints().size(); ++j) {
     if (!model.joints()[j].IsMoving()) continue;
@@ -59,10 +71,12 @@ std::string JointStatesYaml(const KinematicModel& model, const std::vector<doubl
     char value[32];
     std::snprintf(value, sizeof(value), "%.9g", q[j]);
     positions << (first ? "" : ", ") << value;
+    if (!notes[j].empty()) verdicts << " " << model.joints()[j].name << "=" << notes[j];
     first = false;
   }
-  return "# edgefit fit: sensor_msgs/JointState (radians, metres)\nname: [" + names.str() +
-         "]\nposition: [" + positions.str() + "]\nvelocity: []\neffort: []\n";
+  return "# edgefit fit: sensor_msgs/JointState (radians, metres)\n# verdicts:" + verdicts.str() +
+         " (result.json joint_verdicts)\nname: [" + names.str() + "]\nposition: [" +
+         positions.str() + "]\nvelocity: []\neffort: []\n";
 }
 
 int RunFit(const Command& command) {
@@ -103,6 +117,7 @@ int RunFit(const Command& command) {
         model, fit.q, fit.T_world_base, truth.joints, truth.T_world_base,
         SurveyFrame(truth.T_world_scanners, truth.sensor.T_world_scanners_written), &errors);
     if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
+    MarkUnobservableJoints(fit.bodies, &errors);
   }
 
   json result = FitResultJson(model, kind, options, fit);
@@ -120,6 +135,7 @@ int RunFit(const Command& command) {
   }
 
   // Outputs: each atomic; a later failure removes the earlier ones.
+  const std::vector<std::string> notes = JointVerdictNotes(model, fit);
   std::vector<std::string> written;
   auto fail = [&](const Status& status) {
     for (const std::string& path : written) std::remove(path.c_str());
@@ -127,14 +143,14 @@ int RunFit(const Command& command) {
   };
   if (!FLAGS_out_joint_states.empty()) {
     const Status status =
-        WriteStringAtomically(FLAGS_out_joint_states, JointStatesYaml(model, fit.q));
+        WriteStringAtomically(FLAGS_out_joint_states, JointStatesYaml(model, fit.q, notes));
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_joint_states);
   }
   if (!FLAGS_out_urdf.empty()) {
     std::string urdf;
     Status status = CalibratedUrdf(FLAGS_urdf, specs, model, fit.T_world_base, fit.q,
-                                   ModelLoadOptions(), &urdf);
+                                   ModelLoadOptions(), &urdf, notes);
     if (status.ok()) status = WriteStringAtomically(FLAGS_out_urdf, urdf);
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_urdf);
@@ -203,13 +219,20 @@ int RunFit(const Command& command) {
     std::printf("  %-24s %12s %12s %10s\n", "joint", "truth", "fit", "error");
     for (const JointError& j : errors.joints) {
       const double scale = j.prismatic ? 1e3 : 180.0 / M_PI;
-      std::printf("  %-24s %12.4f %12.4f %10.4f %s%s\n", j.name.c_str(), j.truth * scale,
+      std::printf("  %-24s %12.4f %12.4f %10.4f %s%s%s\n", j.name.c_str(), j.truth * scale,
                   j.fit * scale, j.error * scale, j.prismatic ? "mm" : "deg",
-                  j.independent ? "" : " (dependent)");
+                  j.independent ? "" : " (dependent)",
+                  j.unobservable ? " (unobservable: a convention, not scored)" : "");
     }
   }
-  std::printf("quality: %s%s%s\n", fit.ok ? "ok" : "NOT OK", fit.ok ? "" : ": ",
-              fit.message.c_str());
+  std::string unobservable;  // named even when the fit is ok
+  for (const BodyQuality& b : fit.bodies) {
+    if (b.verdict == JointVerdict::kUnobservable) unobservable += " " + b.joint;
+  }
+  std::printf(
+      "quality: %s%s%s%s%s\n", fit.ok ? "ok" : "NOT OK", fit.ok ? "" : ": ", fit.message.c_str(),
+      unobservable.empty() ? "" : "; unobservable (no scan pins them, reported at their zero):",
+      unobservable.c_str());
   std::printf(
       "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
       "%s %.2f s, total %.2f s (load %.2f s)\n",

@@ -148,8 +148,10 @@ Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, co
   EDGEFIT_RETURN_IF_ERROR(
       CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, bench_case.q),
                        bench_case.T_world_base, T_survey_world, &result->errors));
+  MarkUnobservableJoints(fit.bodies, &result->errors);
   for (const JointError& e : result->errors.joints) {
-    if (e.independent && e.error > (e.prismatic ? kFailedPrismatic : kFailedRevolute)) {
+    if (e.independent && !e.unobservable &&
+        e.error > (e.prismatic ? kFailedPrismatic : kFailedRevolute)) {
       result->failed = true;
     }
   }

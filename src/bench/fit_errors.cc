@@ -92,4 +92,12 @@ Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& 
   return Status::Ok();
 }
 
+void MarkUnobservableJoints(const std::vector<BodyQuality>& bodies, FitErrors* errors) {
+  for (JointError& e : errors->joints) {
+    for (const BodyQuality& b : bodies) {
+      if (b.joint == e.name) e.unobservable = b.verdict == JointVerdict::kUnobservable;
+    }
+  }
+}
+
 }  // namespace edgefit

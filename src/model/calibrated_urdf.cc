@@ -62,7 +62,7 @@ Status RobotBody(const std::string& path, const ModelLoadOptions& options, std::
 Status CalibratedUrdf(const std::string& urdf_path, const std::vector<AttachSpec>& attachments,
                       const KinematicModel& model, const Pose& T_world_base,
                       const std::vector<double>& q, const ModelLoadOptions& options,
-                      std::string* out) {
+                      std::string* out, const std::vector<std::string>& joint_notes) {
   if (q.size() != model.joints().size()) {
     return Status::Error("calibrated URDF: " + std::to_string(q.size()) + " joint values for " +
                          std::to_string(model.joints().size()) + " joints");
@@ -75,6 +75,7 @@ Status CalibratedUrdf(const std::string& urdf_path, const std::vector<AttachSpec
     char value[160];
     std::snprintf(value, sizeof(value), " %s=%.9g", model.joints()[j].name.c_str(), q[j]);
     text += value;
+    if (j < joint_notes.size() && !joint_notes[j].empty()) text += " [" + joint_notes[j] + "]";
   }
   const std::string& root = model.links()[static_cast<size_t>(model.root_link())].name;
   text +=

@@ -24,7 +24,7 @@ bool QualityOptions::IsValid(std::string* error) const {
     return fail("min_inlier_share must be in [0, 1]");
   }
   if (!(max_rms > 0.0)) return fail("max_rms must be > 0");
-  return true;
+  return observability.IsValid(error);
 }
 
 bool FitOptions::IsValid(std::string* error) const {

@@ -1,6 +1,8 @@
 // The quality verdict of every body at the final values (stages.h).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "stages.h"
 
@@ -17,17 +19,104 @@ BodyQuality Quality(const KinematicModel& model, const Body& body, const Surface
   quality.rms = summary.rms;
   quality.icp_iterations = summary.iterations;
   quality.ok = summary.inlier_share >= options.min_inlier_share && summary.rms <= options.max_rms;
+  quality.verdict = quality.ok ? JointVerdict::kOk : JointVerdict::kMismatch;
   return quality;
 }
+
+const char* JointVerdictName(JointVerdict verdict) {
+  switch (verdict) {
+    case JointVerdict::kOk:
+      return "ok";
+    case JointVerdict::kAmbiguous:
+      return "ambiguous";
+    case JointVerdict::kUnobservable:
+      return "unobservable";
+    case JointVerdict::kNotSeen:
+      return "not_seen";
+    case JointVerdict::kMismatch:
+      return "mismatch";
+  }
+  return "mismatch";
+}
+
+namespace {
+
+// The value an unobservable joint is reported at: its zero, or the limit
+// nearest it.
+double ConventionalValue(const Joint& j) {
+  return j.has_limits ? std::min(std::max(0.0, j.lower), j.upper) : 0.0;
+}
+
+// Why body b (not ok) is not: one clause of result->message.
+std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const FitResult& result,
+                     const FitOptions& options) {
+  const double value =
+      b.joint.empty() ? 0.0 : result.q[static_cast<size_t>(model.JointIndex(b.joint))];
+  char line[512];
+  if (b.verdict == JointVerdict::kNotSeen) {
+    std::snprintf(line, sizeof(line),
+                  "%s is not seen: %zu of its %zu samples are visible from the stations at the "
+                  "fitted pose (need %zu); %s = %.4f is a guess",
+                  b.link.c_str(), b.visible, b.samples, options.quality.min_visible_samples,
+                  b.joint.c_str(), value);
+  } else if (b.verdict != JointVerdict::kAmbiguous) {
+    std::snprintf(line, sizeof(line),
+                  "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "
+                  "of the scanned surface (need %.0f%%), RMS %.2f mm",
+                  b.link.c_str(), 100.0 * b.inlier_share, 1e3 * options.chain.joint_icp.final_gate,
+                  100.0 * options.quality.min_inlier_share, 1e3 * b.rms);
+  } else if (b.better_elsewhere) {
+    std::snprintf(line, sizeof(line),
+                  "%s is in a wrong basin: %s = %.4f, with the joints below it fitted again "
+                  "there, fits the scan better than the reported %.4f (Eq. 9 loss %.3f mm lower "
+                  "per sample)",
+                  b.link.c_str(), b.joint.c_str(), b.alternative_value, value,
+                  1e3 * b.ambiguity_margin);
+  } else if (DecidedByCoverings(b.covered_margin, options.chain)) {
+    std::snprintf(line, sizeof(line),
+                  "%s is ambiguous: %s = %.4f fits the scan better without the parts found "
+                  "covered (Eq. 9 loss %.3f mm lower per sample), %.4f with them (%.3f mm "
+                  "lower); the coverings were found at the first estimate and may hide either "
+                  "value's surfaces",
+                  b.link.c_str(), b.joint.c_str(), value, 1e3 * b.ambiguity_margin,
+                  b.alternative_value, -1e3 * b.covered_margin);
+  } else {
+    std::snprintf(line, sizeof(line),
+                  "%s is ambiguous: %s = %.4f and %.4f fit the scan about equally well (Eq. 9 "
+                  "loss %.3f mm apart per sample); an attached end effector or more scan "
+                  "coverage would tell them apart",
+                  b.link.c_str(), b.joint.c_str(), value, b.alternative_value,
+                  1e3 * b.ambiguity_margin);
+  }
+  return line;
+}
+
+}  // namespace
 
 Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamples& cad,
                     const std::vector<JointRecord>& records, const Status& resolved,
                     const FitOptions& options, FitResult* result) {
+  // The reporting conventions first (each places every link as the fitted
+  // value does): a joint no scan can pin at its zero (or the limit nearest
+  // it), a joint with a range beyond a full turn at its whole turn nearest
+  // zero.
+  std::vector<bool> unobservable(model.joints().size(), false);
+  std::vector<double> off_share(model.joints().size(), std::nan(""));
+  for (const JointRecord& record : records) {
+    const size_t jj = static_cast<size_t>(record.joint);
+    const Joint& j = model.joints()[jj];
+    unobservable[jj] =
+        TurnIsUnobservable(model, record.joint, result->q, cad.icp, options.samples.icp_spacing,
+                           options.quality.observability, &off_share[jj]);
+    result->q[jj] = unobservable[jj] ? ConventionalValue(j) : NearestZeroTurn(j, result->q[jj]);
+  }
+  (void)model.ResolveDependentJoints(&result->q);
+
   WeightedIcpSummary summary;
   const std::vector<Pose> T_world_link = model.ForwardKinematics(result->q, result->T_world_base);
   for (const JointRecord& record : records) {
-    const Body body =
-        MakeBody(model, model.joints()[static_cast<size_t>(record.joint)].child_link, record.joint);
+    const size_t jj = static_cast<size_t>(record.joint);
+    const Body body = MakeBody(model, model.joints()[jj].child_link, record.joint);
     const SurfaceSamples samples = BodySamples(body, cad.icp, options.samples.max_icp_samples);
     if (samples.points.empty()) continue;  // an empty link: nothing to judge
     EDGEFIT_RETURN_IF_ERROR(icp->Evaluate(samples, T_world_link[static_cast<size_t>(body.link)],
@@ -41,60 +130,53 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     quality.alternative_value = record.alternative;
     quality.ambiguity_margin = record.margin;
     quality.covered_margin = record.covered_margin;
-    quality.ok = quality.ok && !quality.ambiguous;
+    quality.turned_off_share = off_share[jj];
+    for (const double v : WholeTurns(model.joints()[jj], result->q[jj])) {
+      if (v != result->q[jj]) quality.whole_turns.push_back(v);
+    }
+    const bool matches = quality.ok;
+    if (quality.visible < options.quality.min_visible_samples) {
+      quality.verdict = JointVerdict::kNotSeen;
+    } else if (!matches) {
+      quality.verdict = JointVerdict::kMismatch;
+    } else if (unobservable[jj]) {
+      quality.verdict = JointVerdict::kUnobservable;
+    } else if (quality.ambiguous) {
+      quality.verdict = JointVerdict::kAmbiguous;
+    } else {
+      quality.verdict = JointVerdict::kOk;
+    }
+    quality.ok =
+        quality.verdict == JointVerdict::kOk || quality.verdict == JointVerdict::kUnobservable;
     result->bodies.push_back(quality);
   }
-
-  result->ok = resolved.ok();
-  if (!resolved.ok()) result->message = resolved.message();
-  for (const BodyQuality& b : result->bodies) {
-    if (b.ok || !result->ok) continue;
-    result->ok = false;
-    char line[512];
-    if (b.better_elsewhere) {
-      std::snprintf(line, sizeof(line),
-                    "%s is in a wrong basin: %s = %.4f, with the joints below it fitted again "
-                    "there, fits the scan better than the reported %.4f (Eq. 9 loss %.3f mm lower "
-                    "per sample)",
-                    b.link.c_str(), b.joint.c_str(), b.alternative_value,
-                    result->q[static_cast<size_t>(model.JointIndex(b.joint))],
-                    1e3 * b.ambiguity_margin);
-    } else if (b.ambiguous && DecidedByCoverings(b.covered_margin, options.chain)) {
-      std::snprintf(line, sizeof(line),
-                    "%s is ambiguous: %s = %.4f fits the scan better without the parts found "
-                    "covered (Eq. 9 loss %.3f mm lower per sample), %.4f with them (%.3f mm "
-                    "lower); the coverings were found at the first estimate and may hide either "
-                    "value's surfaces",
-                    b.link.c_str(), b.joint.c_str(),
-                    result->q[static_cast<size_t>(model.JointIndex(b.joint))],
-                    1e3 * b.ambiguity_margin, b.alternative_value, -1e3 * b.covered_margin);
-    } else if (b.ambiguous) {
-      std::snprintf(line, sizeof(line),
-                    "%s is ambiguous: %s = %.4f and %.4f fit the scan about equally well (Eq. 9 "
-                    "loss %.3f mm apart per sample); an attached end effector or more scan "
-                    "coverage would tell them apart",
-                    b.link.c_str(), b.joint.c_str(),
-                    result->q[static_cast<size_t>(model.JointIndex(b.joint))], b.alternative_value,
-                    1e3 * b.ambiguity_margin);
-    } else {
-      std::snprintf(line, sizeof(line),
-                    "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "
-                    "of the scanned surface (need %.0f%%), RMS %.2f mm",
-                    b.link.c_str(), 100.0 * b.inlier_share,
-                    1e3 * options.chain.joint_icp.final_gate,
-                    100.0 * options.quality.min_inlier_share, 1e3 * b.rms);
-    }
-    result->message = line;
-  }
+  SayWhyNotOk(model, resolved, options, result);
   return Status::Ok();
+}
+
+void SayWhyNotOk(const KinematicModel& model, const Status& resolved, const FitOptions& options,
+                 FitResult* result) {
+  result->ok = resolved.ok();
+  result->message = resolved.ok() ? "" : resolved.message();
+  for (const BodyQuality& b : result->bodies) {
+    if (b.ok) continue;
+    result->message += (result->ok ? "" : "; ") + WhyNotOk(model, b, *result, options);
+    result->ok = false;
+  }
 }
 
 void MarkBasinChanges(const KinematicModel& model, const ChainFitter& chain,
                       const std::vector<double>& q_first, const FitOptions& options,
                       const ProgressFn& say, FitResult* result) {
+  std::vector<bool> unobservable(model.joints().size(), false);  // reported by convention
+  for (const BodyQuality& body : result->bodies) {
+    if (body.verdict == JointVerdict::kUnobservable) {
+      unobservable[static_cast<size_t>(model.JointIndex(body.joint))] = true;
+    }
+  }
   auto changed = [&](size_t j) {
     const Joint& joint = model.joints()[j];
-    return joint.IsIndependent() && joint.type != JointType::kPrismatic &&
+    return joint.IsIndependent() && joint.type != JointType::kPrismatic && !unobservable[j] &&
            std::abs(std::remainder(result->q[j] - q_first[j], 2.0 * M_PI)) >
                options.refinement.coverings.basin_change;
   };
@@ -131,15 +213,14 @@ void MarkBasinChanges(const KinematicModel& model, const ChainFitter& chain,
       if (body.joint != joint.name) continue;
       body.ambiguous = true;
       body.ok = false;
-    }
-    if (result->ok || result->message.empty()) {
+      if (body.verdict == JointVerdict::kOk) body.verdict = JointVerdict::kAmbiguous;
       std::snprintf(line, sizeof(line),
                     "coverings (jackets, covers) hide much of the arm: %s = %.4f without them "
                     "and %.4f with them; the scan cannot tell which",
                     joint.name.c_str(), result->q[j], q_first[j]);
-      result->message = line;
+      result->message += (result->ok ? "" : "; ") + std::string(line);
+      result->ok = false;
     }
-    result->ok = false;
   }
 }
 

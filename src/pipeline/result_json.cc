@@ -42,8 +42,12 @@ json PerLinkJson(const FitResult& fit) {
                         {"rms_m", b.rms},
                         {"symmetric", b.symmetric},
                         {"icp_iterations", b.icp_iterations},
+                        {"verdict", JointVerdictName(b.verdict)},
                         {"ok", b.ok}};
     if (!b.joint.empty()) per_link[b.link]["sweep_value"] = b.sweep_value;
+    if (std::isfinite(b.turned_off_share)) {
+      per_link[b.link]["turned_off_share"] = b.turned_off_share;
+    }
     per_link[b.link]["ambiguous"] = b.ambiguous;
     per_link[b.link]["better_elsewhere"] = b.better_elsewhere;
     if (std::isfinite(b.ambiguity_margin)) {  // an alternative value was fitted and compared
@@ -55,6 +59,50 @@ json PerLinkJson(const FitResult& fit) {
     }
   }
   return per_link;
+}
+
+// joint_verdicts: per independent joint its verdict, why, and the other
+// values the scan or the geometry leaves open.
+json JointVerdictsJson(const KinematicModel& model, const FitResult& fit) {
+  json verdicts = json::object();
+  for (const BodyQuality& b : fit.bodies) {
+    if (b.joint.empty()) continue;
+    const Joint& j = model.joints()[static_cast<size_t>(model.JointIndex(b.joint))];
+    json v = {{"verdict", JointVerdictName(b.verdict)}, {"link", b.link}};
+    json alternatives = json::array();
+    switch (b.verdict) {
+      case JointVerdict::kUnobservable:
+        v["reason"] = "the geometry it moves looks the same at every value (turned, at most " +
+                      std::to_string(static_cast<int>(std::ceil(100.0 * b.turned_off_share))) +
+                      "% of its samples leave the surface); reported at its zero or the limit "
+                      "nearest it";
+        break;
+      case JointVerdict::kAmbiguous:
+        v["reason"] = b.better_elsewhere ? "another value fits the scan better"
+                                         : "another value fits the scan about as well";
+        alternatives.push_back(
+            {{"value", b.alternative_value}, {"loss_margin_m", NumberOrNull(b.ambiguity_margin)}});
+        break;
+      case JointVerdict::kNotSeen:
+        v["reason"] = "too few of its samples are visible at the fitted pose";
+        break;
+      case JointVerdict::kMismatch:
+        v["reason"] = "its body does not match the scan";
+        break;
+      case JointVerdict::kOk:
+        break;
+    }
+    for (const double turn : b.whole_turns) {
+      alternatives.push_back({{"value", turn}, {"loss_margin_m", 0.0}, {"whole_turn", true}});
+    }
+    if (!b.whole_turns.empty()) {
+      v["convention"] = "of the values a whole turn apart within " + j.name +
+                        "'s limits (the same geometry), the one nearest zero is reported";
+    }
+    v["alternatives"] = alternatives;
+    verdicts[b.joint] = v;
+  }
+  return verdicts;
 }
 
 }  // namespace
@@ -72,6 +120,9 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
       joint_std[model.joints()[j].name] = NumberOrNull(chain.joint_std[j]);
     }
   }
+  for (const BodyQuality& b : fit.bodies) {  // no spread for what no scan decides
+    if (b.verdict == JointVerdict::kUnobservable) joint_std[b.joint] = nullptr;
+  }
   json base_std = {{"rotation_rad", json::array()}, {"xyz_m", json::array()}};
   for (int i = 0; i < 3; ++i) {
     base_std["rotation_rad"].push_back(NumberOrNull(chain.base_rotation_std[i]));
@@ -82,10 +133,9 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
   const CoveringSummary& coverings = fit.coverings;
   for (size_t l = 0; l < coverings.link_covered.size(); ++l) {
     if (coverings.link_covered[l] == 0) continue;
-    covered_links[model.links()[l].name] = {
-        {"matched", coverings.link_matched[l]},
-        {"covered", coverings.link_covered[l]},
-        {"share", coverings.Share(l)}};
+    covered_links[model.links()[l].name] = {{"matched", coverings.link_matched[l]},
+                                            {"covered", coverings.link_covered[l]},
+                                            {"share", coverings.Share(l)}};
   }
   json left_out = json::array();
   for (size_t l = 0; l < fit.stations.links_left_out.size(); ++l) {
@@ -107,6 +157,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"T_world_base", PoseRows(fit.T_world_base)}}},
           {"joints", joints},
           {"joint_std", joint_std},
+          {"joint_verdicts", JointVerdictsJson(model, fit)},
           {"base_std", base_std},
           {"stations",
            {{"aligned", !fit.stations.stations.empty()},

@@ -16,6 +16,7 @@
 #include "solvers/joints/body.h"
 #include "solvers/joints/chain_fitter.h"
 #include "solvers/joints/joint_sweep.h"
+#include "solvers/joints/observability.h"
 #include "solvers/refinement/coverings.h"
 #include "solvers/registration/weighted_icp.h"
 
@@ -75,10 +76,19 @@ Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, con
 
 // The verdict of every jointed body alone at the final values (the base's
 // is in result->bodies already), appended to result->bodies; result->ok
-// and result->message from them and from `resolved` (the dependent joints).
+// and result->message from them and from `resolved` (the dependent joints;
+// SayWhyNotOk). First the reporting conventions move result->q: a joint
+// the geometry cannot pin (TurnIsUnobservable) to its zero or the limit
+// nearest it, a joint with a range beyond a full turn to its whole turn
+// nearest zero (each places every link as the fitted value does).
 Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamples& cad,
                     const std::vector<JointRecord>& records, const Status& resolved,
                     const FitOptions& options, FitResult* result);
+
+// result->ok: `resolved` is ok and so is every body (result->bodies);
+// result->message: why not, a clause per body that is not, joined by "; ".
+void SayWhyNotOk(const KinematicModel& model, const Status& resolved, const FitOptions& options,
+                 FitResult* result);
 
 // Extension: every station registered to the model at result's estimate
 // (options.stations), the coverings found there left out; then, while the

@@ -60,8 +60,18 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   }
   EXPECT_FALSE(result["joint_std"].contains("cylinder_joint"));
   EXPECT_EQ(result["base_std"]["xyz_m"].size(), 3u);
-  EXPECT_NE(Slurp(Path("j.yaml")).find("name: [joint_1, joint_2"), std::string::npos);
+  // A verdict for every independent joint, in result.json and as comments
+  // in the joint states and the calibrated URDF.
+  for (const char* joint : {"joint_1", "joint_2"}) {
+    EXPECT_EQ(result["joint_verdicts"][joint]["verdict"], "ok") << result["joint_verdicts"].dump();
+    EXPECT_TRUE(result["joint_verdicts"][joint]["alternatives"].empty());
+  }
+  EXPECT_FALSE(result["joint_verdicts"].contains("cylinder_joint"));
+  const std::string yaml = Slurp(Path("j.yaml"));
+  EXPECT_NE(yaml.find("name: [joint_1, joint_2"), std::string::npos);
+  EXPECT_NE(yaml.find("# verdicts: joint_1=ok joint_2=ok"), std::string::npos) << yaml;
   const std::string urdf = Slurp(Path("fitted.urdf"));
+  EXPECT_NE(urdf.find(" [ok]"), std::string::npos);
   EXPECT_NE(urdf.find("<link name=\"world\"/>"), std::string::npos);
   EXPECT_NE(urdf.find("world_to_base_link"), std::string::npos);
   const std::string ply = Slurp(Path("model.ply"));

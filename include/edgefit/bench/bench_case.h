@@ -66,7 +66,7 @@ struct BenchResult {
   ChainRefinementSummary chain;  // refinement and covariance (joint_std)
   bool ok = false;               // the fit's own verdict (FitResult::ok)
   std::string message;
-  bool failed = false;  // an independent joint beyond the bounds above
+  bool failed = false;  // an observable independent joint beyond the bounds above
 };
 
 // The case's scene (ScanAsset with scan_options, its seed replaced by the

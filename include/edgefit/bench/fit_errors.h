@@ -11,6 +11,7 @@
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/pipeline/fit_result.h"
 
 namespace edgefit {
 
@@ -21,6 +22,10 @@ struct JointError {
   double truth = 0.0;       // [rad] or [m]
   double fit = 0.0;
   double error = 0.0;  // |fit - truth| [rad] (modulo a turn) or [m]
+  // The fit said no scan could pin it (JointVerdict::kUnobservable): its
+  // value is a convention, left out of the accuracy figures and of the
+  // failed-fit rule.
+  bool unobservable = false;
 };
 
 struct FitErrors {
@@ -65,6 +70,9 @@ Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& 
                         const std::vector<std::pair<std::string, double>>& truth_joints,
                         const Pose& T_world_base_truth, const Pose& T_survey_world,
                         FitErrors* errors);
+
+// Sets JointError::unobservable from the fit's verdicts (FitResult::bodies).
+void MarkUnobservableJoints(const std::vector<BodyQuality>& bodies, FitErrors* errors);
 
 }  // namespace edgefit
 

@@ -18,7 +18,8 @@ namespace edgefit {
 // The text of the main URDF at `urdf_path` with
 //  - a link "world" and a fixed joint "world_to_<root>" at T_world_base,
 //  - the fitted values of every moving joint of `model` in a comment
-//    (URDF has no joint state),
+//    (URDF has no joint state), each followed by joint_notes[j] in
+//    brackets when that is given and not empty (the fit's verdict),
 //  - each attachment's links and joints, joined to its parent link by the
 //    fixed joint "<parent_link>_to_<root>" at T_parent_root (the names
 //    LoadModelWithAttachments gives),
@@ -30,7 +31,7 @@ namespace edgefit {
 Status CalibratedUrdf(const std::string& urdf_path, const std::vector<AttachSpec>& attachments,
                       const KinematicModel& model, const Pose& T_world_base,
                       const std::vector<double>& q, const ModelLoadOptions& options,
-                      std::string* out);
+                      std::string* out, const std::vector<std::string>& joint_notes = {});
 
 }  // namespace edgefit
 

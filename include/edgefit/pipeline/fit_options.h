@@ -17,6 +17,7 @@
 #include "solvers/base/conveyance_base_rough.h"
 #include "solvers/joints/body.h"
 #include "solvers/joints/chain_fitter.h"
+#include "solvers/joints/observability.h"
 #include "solvers/refinement/chain_refinement.h"
 #include "solvers/refinement/coverings.h"
 #include "solvers/registration/residual_options.h"
@@ -67,6 +68,12 @@ struct QualityOptions {
   // the final gate of the joint ICP and their RMS is at most max_rms [m].
   double min_inlier_share = 0.8;
   double max_rms = 0.003;  // [m]
+  // A joint is not seen when fewer of its body's CAD samples than this are
+  // visible from the stations at the fitted pose (4 mm samples: 30 are
+  // about 5 cm by 10 cm of surface).
+  size_t min_visible_samples = 30;
+  // Which revolute joints the geometry cannot pin (a bare round flange).
+  ObservabilityOptions observability;
 
   bool IsValid(std::string* error) const;
 };

@@ -16,6 +16,17 @@
 
 namespace edgefit {
 
+// Extension: what the scan says of one joint (result.json joint_verdicts).
+//  kOk            the scan pins it
+//  kAmbiguous     another value fits about as well, or better (a wrong basin)
+//  kUnobservable  no scan could pin it: the geometry it moves looks the same
+//                 at every value (a bare round flange); reported by a
+//                 convention, joint_std null; does not make the fit not ok
+//  kNotSeen       too few of its samples are visible at the fitted pose
+//  kMismatch      its body does not match the scan
+enum class JointVerdict { kOk, kAmbiguous, kUnobservable, kNotSeen, kMismatch };
+const char* JointVerdictName(JointVerdict verdict);
+
 struct BodyQuality {
   std::string link;    // the moved link (the base: the root)
   std::string joint;   // the joint that moves it ("" for the base)
@@ -38,12 +49,22 @@ struct BodyQuality {
   // the reported value fits there per sample [m] (negative: the
   // alternative; NaN when not compared).
   double covered_margin = std::numeric_limits<double>::quiet_NaN();
-  bool ok = false;
+  // The joint's verdict (kOk for the base when ok) and, for kUnobservable,
+  // the largest share of the subtree's samples a turn moved off its own
+  // surface (ObservabilityOptions).
+  JointVerdict verdict = JointVerdict::kMismatch;
+  double turned_off_share = std::numeric_limits<double>::quiet_NaN();
+  // The other values 2 pi apart within the limits that place every link
+  // the same (a revolute joint with a range beyond a full turn): the
+  // reported value is the one nearest the joint's zero.
+  std::vector<double> whole_turns;
+  bool ok = false;  // the body matches and the verdict is ok or unobservable
 };
 
 struct FitTimings {
   // refine: the whole-chain refinement (or the covariance alone) [s]
-  double edges = 0.0, stations = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0, refine = 0.0,
+  double edges = 0.0, stations = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0,
+         refine = 0.0,
          total = 0.0;  // [s]
 };
 
