@@ -99,6 +99,7 @@ std::vector<double> WholeTurns(const Joint& j, double q_j) {
 }
 
 double NearestZeroTurn(const Joint& j, double q_j) {
+  if (j.type == JointType::kContinuous) return std::remainder(q_j, 2.0 * M_PI);
   double best = q_j;
   for (const double v : WholeTurns(j, q_j)) {
     if (std::abs(v) < std::abs(best) - 1e-12) best = v;

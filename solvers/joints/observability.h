@@ -65,7 +65,7 @@ bool TurnIsUnobservable(const KinematicModel& model, int joint, const std::vecto
 std::vector<double> WholeTurns(const Joint& j, double q_j);
 
 // The reporting convention among WholeTurns: the value nearest the joint's
-// zero (q_j itself on a tie).
+// zero (q_j itself on a tie); a continuous joint's value in [-pi, pi].
 double NearestZeroTurn(const Joint& j, double q_j);
 
 }  // namespace edgefit

@@ -92,6 +92,7 @@ TEST(ObservabilityTest, WholeTurnsOfAJointBeyondAFullTurn) {
   Joint wheel;  // continuous: no limits to count turns within
   wheel.type = JointType::kContinuous;
   EXPECT_EQ(WholeTurns(wheel, 7.0), std::vector<double>{7.0});
+  EXPECT_NEAR(NearestZeroTurn(wheel, 7.0), 7.0 - 2.0 * M_PI, 1e-12);
 }
 
 }  // namespace
