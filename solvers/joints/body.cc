@@ -13,6 +13,10 @@ bool CadSampleOptions::IsValid(std::string* error) const {
     if (error != nullptr) *error = "sample spacings must be > 0";
     return false;
   }
+  if (!(max_model_extent > 0.0)) {
+    if (error != nullptr) *error = "max_model_extent must be > 0";
+    return false;
+  }
   if (max_icp_samples < 100 || max_sweep_samples < 100 || max_subtree_icp_samples < 100 ||
       max_chain_samples < 100) {
     if (error != nullptr) *error = "sample budgets must be >= 100";

@@ -34,6 +34,10 @@ struct CadSampleOptions {
   // bundled robot 30000 halved the revolute errors of the sequential fit;
   // 5000 gained nothing (0.0075 deg) and put the base farther off.
   int max_chain_samples = 30000;
+  // A model whose bounding box at its zero posture is longer than this on a
+  // side is refused before it is sampled [m]: URDF lengths are metres, and
+  // a URDF written in millimetres (a robot 3 km tall) would exhaust memory.
+  double max_model_extent = 100.0;
 
   bool IsValid(std::string* error) const;
 };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <utility>
 
 #include "edgefit/correspondence/correspondence_search.h"
@@ -44,6 +45,18 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
     result->timings.total = Since(start);
     return Status::Ok();
   };
+
+  const Eigen::Vector3d extent =
+      model.BoundingBox(model.ZeroJoints(), Pose::Identity()).sizes();
+  if (!(extent.maxCoeff() <= options.samples.max_model_extent)) {
+    char line[300];
+    std::snprintf(line, sizeof(line),
+                  "the model spans %.4g m at its zero posture (more than %.0f m): URDF lengths "
+                  "are metres; is it written in millimetres?",
+                  extent.maxCoeff(), options.samples.max_model_extent);
+    const std::string& source = model.links()[static_cast<size_t>(model.root_link())].source;
+    return Status::Error(source.empty() ? std::string(line) : source + ": " + line);
+  }
 
   // CAD samples: dense for the ICP stages, sparse for the sweeps.
   SamplingOptions sampling;

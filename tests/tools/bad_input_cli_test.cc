@@ -1,8 +1,9 @@
 // Malformed input to `edgefit fit`, one table: truncated files, wrong
 // counts, NaN and Inf, huge or negative sizes, wrong field types, missing
-// meshes, cyclic URDFs, mimic loops, units where numbers belong. Each ends
-// with exit 2, one stderr line naming the file and the problem, nothing on
-// stdout, and none of the requested outputs left behind.
+// meshes, cyclic URDFs, mimic loops, units where numbers belong, a URDF in
+// millimetres. Each ends with exit 2, one stderr line naming the file and
+// the problem, nothing on stdout, and none of the requested outputs left
+// behind.
 #include <string>
 #include <vector>
 
@@ -128,6 +129,8 @@ std::vector<BadFile> Cases() {
       {"UrdfNegativeBox", "urdf", Robot(BoxLink("a", "0.1 -0.1 0.1")),
        "link 'a': box size must be three finite lengths > 0"},
       {"UrdfInfBox", "urdf", Robot(BoxLink("a", "0.1 inf 0.1")), "Unable to parse component [inf]"},
+      {"UrdfInMillimetres", "urdf", Robot(BoxLink("a", "400 400 900")),
+       "spans 900 m at its zero posture (more than 100 m): URDF lengths are metres"},
       {"UrdfZeroRadius", "urdf",
        Robot("<link name=\"a\"><visual><geometry><cylinder radius=\"0\" length=\"1\"/>"
              "</geometry></visual></link>"),
