@@ -100,21 +100,25 @@ struct ChainOptions {
   // flipped wrist taken in the first round left the gun's jaw 42 mm off,
   // which only the second round's sweep saw. 0: only report.
   int final_basin_rounds = 2;
-  // A revolute joint moved by pinning_revolute (a failed fit's bound) either
-  // way must cost on average at least pinning_mean_loss per sample more
-  // [m], else it is ambiguous. In 69 fits of the bundled robot with its gun
-  // the lower of the two sides' rises was never below 0.096 mm/sample (so
-  // neither is the mean). A wrist without a tool rises less at its right
-  // value: 0.027 mm/sample (the bundled robot's joint 4, 4 mm scan) and
-  // 0.037 (a KUKA KR 150's axis 4, 1.7 mm); a round flange, which no scan
-  // pins, 0.042 (31 deg off: its bolt holes), so this test does not find
-  // those (observability.h does). Prismatic joints are not tested: on the
+  // A revolute joint moved by pinning_revolute either way (the sweep's
+  // distinct basins, JointSweepOptions::distinct_revolute) must cost on
+  // average at least pinning_mean_loss per sample more [m], the bound of
+  // two distinct values (ambiguity_mean_loss), else it is ambiguous: a
+  // value that far fits about as well. Not at the failure bound (0.5 deg),
+  // which asked how sharp one minimum is, not whether another value fits:
+  // a bare wrist's right value rose 0.027 mm/sample there (the bundled
+  // robot's joint 4, 4 mm scan), 0.017 and 0.029 (a KUKA KR 150's axes 5
+  // and 4, 0.06 and 0.03 deg off), and a KUKA axis 5 0.0002 deg off fell
+  // (its Eq. 9 minimum at 12 mm samples lies a little off the ICP's), while
+  // a round flange 31 deg off rose 0.042 (its bolt holes): no bound there
+  // tells right from wrong. A flange no scan can pin is found by its
+  // geometry (observability.h). Prismatic joints are not tested: on the
   // bundled gun's jaw (a rod sliding along itself) the lower rise at 5 mm
   // ran from -0.125 to 0.2 mm/sample over 48 fits whose jaws were within
   // 4 mm, and was 0.015 and -0.001 for the two off by more: no bound
   // separates them.
-  double pinning_revolute = 0.5 * M_PI / 180.0;  // [rad]
-  double pinning_mean_loss = 0.00001;
+  double pinning_revolute = 5.0 * M_PI / 180.0;  // [rad]
+  double pinning_mean_loss = 0.00006;
   // After a joint takes its alternative value, the subtree pass runs again
   // over every joint, up to this many times, until none moves by more than
   // settle_tolerance_rad (revolute) or settle_tolerance_m (prismatic).
@@ -196,11 +200,11 @@ class ChainFitter {
   // its subtree's Eq. (9) loss at the joint's value moved by
   // ChainOptions::pinning_revolute must rise by at least pinning_mean_loss
   // per sample, on average over the two sides within the limits; else the
-  // joint is ambiguous with the moved value as its alternative (a round link
-  // that nothing below it tells). Checked at the sequential fit's values
-  // instead, jacketed wrists pulled off their minimum rose by -0.043 to
-  // 0.020 mm/sample, and 4 of 12 right fits of big robots with a gun were
-  // called ambiguous.
+  // joint is ambiguous with the moved value as its alternative (a link that
+  // nothing below it tells). Checked at the sequential fit's values instead
+  // (with the 0.5 deg move of then), jacketed wrists pulled off their
+  // minimum rose by -0.043 to 0.020 mm/sample, and 4 of 12 right fits of
+  // big robots with a gun were called ambiguous.
   void CheckPinning(const Pose& T_world_base, std::vector<JointRecord>* records,
                     const std::vector<double>& q) const;
   // The scan with its coverings (jackets, covers; borrowed, may be null),
