@@ -3,29 +3,11 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <nanoflann.hpp>
 
+#include "edgefit/core/point_kdtree.h"
 #include "solvers/joints/body.h"
 
 namespace edgefit {
-namespace {
-
-// nanoflann dataset adaptor over the unturned samples.
-struct SampleAdaptor {
-  const std::vector<Eigen::Vector3f>* points;
-  size_t kdtree_get_point_count() const { return points->size(); }
-  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-
-using SampleTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, SampleAdaptor>,
-                                        SampleAdaptor, 3, uint32_t>;
-
-}  // namespace
 
 bool ObservabilityOptions::IsValid(std::string* error) const {
   if (turns.empty() || !(surface_tolerance > 0.0) || !(gap_spacings > 0.0) ||
@@ -44,8 +26,8 @@ double TurnedOffShare(const SurfaceSamples& samples, const Eigen::Vector3d& axis
                       double angle, double spacing, const ObservabilityOptions& options) {
   const size_t n = samples.points.size();
   if (n == 0 || samples.normals.size() != n) return 1.0;
-  SampleAdaptor adaptor{&samples.points};
-  SampleTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  PointVectorAdaptor adaptor{&samples.points};
+  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   tree.buildIndex();
   const Eigen::Matrix3f R =
       Eigen::AngleAxisd(angle, axis_child.normalized()).toRotationMatrix().cast<float>();

@@ -4,32 +4,16 @@
 
 #include <cmath>
 #include <cstdint>
-#include <nanoflann.hpp>
+
+#include "edgefit/core/point_kdtree.h"
 
 namespace edgefit {
-namespace {
-
-// nanoflann dataset adaptor over the cropped world points.
-struct PointAdaptor {
-  const std::vector<Eigen::Vector3f>* points;
-  size_t kdtree_get_point_count() const { return points->size(); }
-  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-
-using Index = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<float, PointAdaptor>, PointAdaptor, 3, uint32_t>;
-
-}  // namespace
 
 struct KdTreeSearch::Tree {
   explicit Tree(const std::vector<Eigen::Vector3f>* points)
       : adaptor{points}, index(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {}
-  PointAdaptor adaptor;
-  Index index;  // built in its constructor
+  PointVectorAdaptor adaptor;
+  PointKdTree index;  // built in its constructor
 };
 
 KdTreeSearch::KdTreeSearch(const ScanSet* scans, const CellWeights* weights)
@@ -71,8 +55,8 @@ bool KdTreeSearch::SetCrop(const Eigen::AlignedBox3d& crop_world) {
 }
 
 void KdTreeSearch::Find(const std::vector<Eigen::Vector3f>& q_world,
-                        const Eigen::AlignedBox3d& crop_world,
-                        const CorrespondenceOptions& options, std::vector<Correspondence>* out) {
+                        const Eigen::AlignedBox3d& crop_world, const CorrespondenceOptions& options,
+                        std::vector<Correspondence>* out) {
   CHECK(out != nullptr);
   std::string error;
   CHECK(options.IsValid(&error)) << error;

@@ -4,24 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nanoflann.hpp>
 #include <numeric>
 #include <utility>
 
+#include "edgefit/core/point_kdtree.h"
+
 namespace edgefit {
 namespace {
-
-// nanoflann dataset adaptor over the candidates' world points.
-struct PointAdaptor {
-  const std::vector<Eigen::Vector3f>* points;
-  size_t kdtree_get_point_count() const { return points->size(); }
-  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
-};
-
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<float, PointAdaptor>, PointAdaptor, 3, uint32_t>;
 
 // Neighbour lists in compressed rows, built in fixed blocks of candidates
 // so that threads fill disjoint blocks.
@@ -33,8 +22,8 @@ struct NeighbourBlock {
 };
 
 std::vector<NeighbourBlock> FindNeighbours(const EdgeCandidates& candidates, float radius) {
-  PointAdaptor adaptor{&candidates.p_world};
-  KdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  PointVectorAdaptor adaptor{&candidates.p_world};
+  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   tree.buildIndex();
   const size_t n = candidates.size();
   const size_t blocks = (n + kBlock - 1) / kBlock;
