@@ -109,10 +109,20 @@ Status ParseHeader(const std::string& name, LineCursor* cursor, PcdHeader* h) {
     return Status::Error(where + "POINTS " + std::to_string(h->points) + " != WIDTH x HEIGHT " +
                          std::to_string(h->width * h->height));
   }
+  // A point's record: far below this in any PCD (a 308-float VFH is 1.2 kB);
+  // bounded so that SIZE x COUNT can neither overflow nor promise gigabytes.
+  constexpr int64_t kMaxRecordBytes = int64_t{1} << 20;
   for (size_t i = 0; i < n; ++i) {
     PcdField& f = h->fields[i];
+    const int64_t count = counts.empty() ? 1 : counts[i];
+    if (sizes[i] > 8 || count > kMaxRecordBytes ||
+        h->record_bytes + sizes[i] * count > kMaxRecordBytes) {
+      return Status::Error(where + "field " + f.name + ": SIZE " + std::to_string(sizes[i]) +
+                           " x COUNT " + std::to_string(count) +
+                           " makes a point record larger than 1 MiB");
+    }
     f.size = static_cast<int>(sizes[i]);
-    f.count = counts.empty() ? 1 : static_cast<int>(counts[i]);
+    f.count = static_cast<int>(count);
     if (types[i].size() != 1 || !io_internal::PcdScalarType(types[i][0], f.size, &f.scalar)) {
       return Status::Error(where + "unsupported TYPE/SIZE '" + types[i] + "'/" +
                            std::to_string(f.size) + " of field " + f.name);

@@ -85,6 +85,12 @@ std::vector<BadCase> Cases() {
       {"PcdAsciiTruncated", "pcd", pcd_header + "DATA ascii\n1 2 3\n", "line 11: file ends after 1 of 2"},
       {"PcdAsciiInf", "pcd", pcd_header + "DATA ascii\n1 2 3\n1 inf 3\n", "line 11: infinite coordinate"},
       {"PcdBinaryTruncated", "pcd", pcd_header + "DATA binary\n" + std::string(20, '\0'), "file truncated"},
+      {"PcdHugeCount", "pcd",
+       "FIELDS x y z rgb\nSIZE 4 4 4 2\nTYPE F F F U\nCOUNT 555500000001 1 1 2\nWIDTH 1\nHEIGHT 1\n"
+       "DATA binary\n",
+       "field x: SIZE 4 x COUNT 555500000001 makes a point record larger than 1 MiB"},
+      {"PcdHugeSize", "pcd", "FIELDS x y z\nSIZE 4294967300 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nDATA ascii\n",
+       "field x: SIZE 4294967300 x COUNT 1"},
       {"PcdUnknownKey", "pcd", "FIELDS x y z\nCOLOR 1\n", "line 2: unknown PCD header key"},
       {"PcdAllNan", "pcd", pcd_header + "DATA ascii\nnan nan nan\nnan nan nan\n", "no valid points"},
       {"PlyNotPly", "ply", "solid cube\n", "not a PLY file"},
