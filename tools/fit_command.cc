@@ -202,7 +202,8 @@ int RunFit(const Command& command) {
       const bool prismatic = joint.type == JointType::kPrismatic;
       const double scale = prismatic ? 1e3 : 180.0 / M_PI;
       char spread[48] = "";
-      const double std = fit.chain_refinement.joint_std[j];
+      const std::vector<double>& stds = fit.chain_refinement.joint_std;  // none: not computed
+      const double std = j < stds.size() && notes[j] != "unobservable" ? stds[j] : NAN;
       if (std::isfinite(std)) {
         std::snprintf(spread, sizeof(spread), "  (std %.4f)", std * scale);
       }

@@ -62,12 +62,12 @@ json PerLinkJson(const FitResult& fit) {
 }
 
 // joint_verdicts: per independent joint its verdict, why, and the other
-// values the scan or the geometry leaves open.
+// values the scan or the geometry leaves open; not_seen for every joint of
+// a fit that stopped before the joints (no body judged).
 json JointVerdictsJson(const KinematicModel& model, const FitResult& fit) {
   json verdicts = json::object();
   for (const BodyQuality& b : fit.bodies) {
     if (b.joint.empty()) continue;
-    const Joint& j = model.joints()[static_cast<size_t>(model.JointIndex(b.joint))];
     json v = {{"verdict", JointVerdictName(b.verdict)}, {"link", b.link}};
     json alternatives = json::array();
     switch (b.verdict) {
@@ -96,11 +96,18 @@ json JointVerdictsJson(const KinematicModel& model, const FitResult& fit) {
       alternatives.push_back({{"value", turn}, {"loss_margin_m", 0.0}, {"whole_turn", true}});
     }
     if (!b.whole_turns.empty()) {
-      v["convention"] = "of the values a whole turn apart within " + j.name +
+      v["convention"] = "of the values a whole turn apart within " + b.joint +
                         "'s limits (the same geometry), the one nearest zero is reported";
     }
     v["alternatives"] = alternatives;
     verdicts[b.joint] = v;
+  }
+  for (const Joint& j : model.joints()) {  // a fit that stopped before the joints
+    if (!j.IsIndependent() || verdicts.contains(j.name)) continue;
+    verdicts[j.name] = {{"verdict", JointVerdictName(JointVerdict::kNotSeen)},
+                        {"link", model.links()[static_cast<size_t>(j.child_link)].name},
+                        {"reason", "not fitted: the fit stopped before the joints"},
+                        {"alternatives", json::array()}};
   }
   return verdicts;
 }
@@ -116,8 +123,9 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
   const ChainRefinementSummary& chain = fit.chain_refinement;
   for (size_t j = 0; j < model.joints().size(); ++j) {
     if (model.joints()[j].IsMoving()) joints[model.joints()[j].name] = fit.q[j];
-    if (model.joints()[j].IsIndependent()) {
-      joint_std[model.joints()[j].name] = NumberOrNull(chain.joint_std[j]);
+    if (model.joints()[j].IsIndependent()) {  // none when the fit stopped before the chain
+      joint_std[model.joints()[j].name] =
+          j < chain.joint_std.size() ? NumberOrNull(chain.joint_std[j]) : json(nullptr);
     }
   }
   for (const BodyQuality& b : fit.bodies) {  // no spread for what no scan decides
