@@ -63,7 +63,7 @@ bool TurnIsUnobservable(const KinematicModel& model, int joint, const std::vecto
   double largest = 0.0;
   for (const double angle : options.turns) {
     largest = std::max(largest, TurnedOffShare(samples, j.axis, angle, thinned_spacing, options));
-    if (largest > options.max_off_share && largest_off_share == nullptr) break;
+    if (largest > options.max_off_share) break;  // pinned: the other turns change nothing
   }
   if (largest_off_share != nullptr) *largest_off_share = largest;
   return largest <= options.max_off_share;

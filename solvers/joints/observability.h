@@ -53,8 +53,8 @@ double TurnedOffShare(const SurfaceSamples& samples, const Eigen::Vector3d& axis
 // (link_samples: every link's, link frame, at `spacing`) is moved off its
 // own surface by none of options.turns. False for prismatic or fixed joints
 // and for an empty subtree. *largest_off_share (may be null): the largest
-// share any turn moved off (the first turn's over max_off_share when null:
-// the test stops there).
+// share a turn moved off; the test stops at the first turn over
+// max_off_share, so for a joint it pins that turn's share.
 bool TurnIsUnobservable(const KinematicModel& model, int joint, const std::vector<double>& q,
                         const std::vector<SurfaceSamples>& link_samples, double spacing,
                         const ObservabilityOptions& options, double* largest_off_share = nullptr);

@@ -49,9 +49,9 @@ struct BodyQuality {
   // the reported value fits there per sample [m] (negative: the
   // alternative; NaN when not compared).
   double covered_margin = std::numeric_limits<double>::quiet_NaN();
-  // The joint's verdict (kOk for the base when ok) and, for kUnobservable,
-  // the largest share of the subtree's samples a turn moved off its own
-  // surface (ObservabilityOptions).
+  // The joint's verdict (kOk for the base when ok) and, for a revolute
+  // joint, TurnIsUnobservable's largest share of its subtree's samples a
+  // turn moved off their own surface (NaN for the others).
   JointVerdict verdict = JointVerdict::kMismatch;
   double turned_off_share = std::numeric_limits<double>::quiet_NaN();
   // The other values 2 pi apart within the limits that place every link
