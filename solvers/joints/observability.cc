@@ -80,6 +80,10 @@ std::vector<double> WholeTurns(const Joint& j, double q_j) {
   return values;
 }
 
+double ZeroOrNearestLimit(const Joint& j) {
+  return j.has_limits ? std::min(std::max(0.0, j.lower), j.upper) : 0.0;
+}
+
 double NearestZeroTurn(const Joint& j, double q_j) {
   if (j.type == JointType::kContinuous) return std::remainder(q_j, 2.0 * M_PI);
   double best = q_j;

@@ -26,9 +26,10 @@ struct ObservabilityOptions {
   // the samples off: what is left is relief a scan does not reliably read.
   // Measured at 4 mm samples, the largest share over the turns: bare
   // flanges (bolt holes, a faceted rim) of the FANUC M-900iB 0.014, KUKA
-  // KR 150 0.10, ABB IRB 6700 0.13; a wrist link 0.43-0.59 (the bundled
-  // robot's forearm, two-fold round: 0.09 at the half turn), a flange
-  // carrying the bundled gun or the X16005 0.74-0.75. At 1 mm the flanges'
+  // KR 150 0.10, ABB IRB 6700 0.13, the bundled robot 0.03; the bundled
+  // robot's forearm 0.42 (two-fold round: 0.09 at the half turn); wrists
+  // (joint 5) 0.54-0.85; a flange carrying the bundled gun 0.74 (the
+  // X16005 on a KUKA 0.75, at 12 mm samples). At 1 mm the flanges'
   // facets and holes move 10-28 % off and a bare KUKA flange fitted 31 deg
   // off passed the scan's pinning test: the holes do not pin it.
   std::vector<double> turns = {0.05, 0.2, 0.5, 1.0, 2.0, 3.14159};
@@ -63,6 +64,10 @@ bool TurnIsUnobservable(const KinematicModel& model, int joint, const std::vecto
 // as q_j does: q_j + 2 pi k, ascending (q_j itself included; a joint with
 // a range of at most a full turn or without limits gives just q_j).
 std::vector<double> WholeTurns(const Joint& j, double q_j);
+
+// The value a joint no scan can pin is reported at: its zero, or the limit
+// nearest it.
+double ZeroOrNearestLimit(const Joint& j);
 
 // The reporting convention among WholeTurns: the value nearest the joint's
 // zero (q_j itself on a tie); a continuous joint's value in [-pi, pi].

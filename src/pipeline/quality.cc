@@ -1,5 +1,4 @@
 // The quality verdict of every body at the final values (stages.h).
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -40,12 +39,6 @@ const char* JointVerdictName(JointVerdict verdict) {
 }
 
 namespace {
-
-// The value an unobservable joint is reported at: its zero, or the limit
-// nearest it.
-double ConventionalValue(const Joint& j) {
-  return j.has_limits ? std::min(std::max(0.0, j.lower), j.upper) : 0.0;
-}
 
 // Why body b (not ok) is not: one clause of result->message.
 std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const FitResult& result,
@@ -108,7 +101,7 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     unobservable[jj] =
         TurnIsUnobservable(model, record.joint, result->q, cad.icp, options.samples.icp_spacing,
                            options.quality.observability, &off_share[jj]);
-    result->q[jj] = unobservable[jj] ? ConventionalValue(j) : NearestZeroTurn(j, result->q[jj]);
+    result->q[jj] = unobservable[jj] ? ZeroOrNearestLimit(j) : NearestZeroTurn(j, result->q[jj]);
   }
   (void)model.ResolveDependentJoints(&result->q);
 
