@@ -66,7 +66,7 @@ def fit(edgefit, model, scan_path, out, extra=()):
         result = json.load(f)
     q = result["quality"]
     return {"exit": 0, "ok": q["ok"], "message": q["message"],
-            "verdicts": {j: v["verdict"] for j, v in result["joint_verdicts"].items()}}
+            "verdicts": {j: v["verdict"] for j, v in result["joint_status"].items()}}
 
 
 def absolute_meshes(root, urdf_dir):
@@ -141,7 +141,7 @@ def off(result_path):
     with open(result_path) as f:
         result = json.load(f)
     errors = result["errors"]
-    for joint, verdict in result["joint_verdicts"].items():
+    for joint, verdict in result["joint_status"].items():
         if verdict["verdict"] == "unobservable":
             continue
         error = errors["joints"][joint]

@@ -204,6 +204,7 @@ nlohmann::json RunJson(const Run& run) {
             {"base_precise", t.base_precise},
             {"chain", t.chain},
             {"refine", t.refine},
+            {"alternatives", t.alternatives},
             {"total", t.total}}},
           {"ok", run.result.ok},
           {"message", run.result.message},

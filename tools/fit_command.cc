@@ -75,7 +75,7 @@ std::string JointStatesYaml(const KinematicModel& model, const std::vector<doubl
     first = false;
   }
   return "# edgefit fit: sensor_msgs/JointState (radians, metres)\n# verdicts:" + verdicts.str() +
-         " (result.json joint_verdicts)\nname: [" + names.str() + "]\nposition: [" +
+         " (result.json joint_status)\nname: [" + names.str() + "]\nposition: [" +
          positions.str() + "]\nvelocity: []\neffort: []\n";
 }
 

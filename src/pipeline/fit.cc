@@ -124,6 +124,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   };
   Attempt best;
   EDGEFIT_RETURN_IF_ERROR(fit_from(roughs.front(), &icp, &chain, &best));
+  const auto alternatives_start = std::chrono::steady_clock::now();
   for (size_t k = 1; k < roughs.size(); ++k) {
     say("base: the whole chain from alternative rough pose " + std::to_string(k));
     Attempt other;
@@ -138,6 +139,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
       result->base_rough.T_world_base = roughs[k];
     }
   }
+  result->timings.alternatives = Since(alternatives_start);
   result->T_world_base = best.T_world_base;
   result->bodies.push_back(Quality(model, base, base_samples, best.base, options.quality));
   Status resolved = model.ResolveDependentJoints(&best.q);

@@ -52,6 +52,11 @@ std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const Fi
                   "fitted pose (need %zu); %s = %.4f is a guess",
                   b.link.c_str(), b.visible, b.samples, options.quality.min_visible_samples,
                   b.joint.c_str(), value);
+  } else if (b.verdict != JointVerdict::kAmbiguous && b.inlier_share == 0.0) {
+    std::snprintf(line, sizeof(line),
+                  "%s does not match the scan: none of its %zu visible samples has a scan point "
+                  "within %.1f mm; the stations saw past where it is fitted",
+                  b.link.c_str(), b.visible, 1e3 * options.chain.joint_icp.final_gate);
   } else if (b.verdict != JointVerdict::kAmbiguous) {
     std::snprintf(line, sizeof(line),
                   "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "

@@ -88,6 +88,7 @@ Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, con
     bool moved = false;
     EDGEFIT_RETURN_IF_ERROR(
         chain->CheckFinalBasins(result->T_world_base, take, &result->q, records, &moved));
+    result->timings.alternatives += Since(round_start);
     char line[160];
     std::snprintf(line, sizeof(line),
                   "final basins: every joint swept at the final values in %.2f s",
@@ -99,7 +100,9 @@ Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, con
         RefineWholeChain(model, scans, search, weights, cad, options, say, result, covered));
   }
   result->coverings = coverings;  // the verdict's: the cells left out of the first refinement
+  const auto pinning_start = std::chrono::steady_clock::now();
   chain->CheckPinning(result->T_world_base, records, result->q);
+  result->timings.alternatives += Since(pinning_start);
   result->timings.refine = refine_before + Since(start);
   return Status::Ok();
 }

@@ -61,10 +61,11 @@ json PerLinkJson(const FitResult& fit) {
   return per_link;
 }
 
-// joint_verdicts: per independent joint its verdict, why, and the other
-// values the scan or the geometry leaves open; not_seen for every joint of
-// a fit that stopped before the joints (no body judged).
-json JointVerdictsJson(const KinematicModel& model, const FitResult& fit) {
+// joint_status: per independent joint its verdict, why, its standard
+// deviation (joint_std's; null when unobservable) and the other values the
+// scan or the geometry leaves open; not_seen for every joint of a fit that
+// stopped before the joints (no body judged).
+json JointStatusJson(const KinematicModel& model, const FitResult& fit, const json& joint_std) {
   json verdicts = json::object();
   for (const BodyQuality& b : fit.bodies) {
     if (b.joint.empty()) continue;
@@ -99,6 +100,7 @@ json JointVerdictsJson(const KinematicModel& model, const FitResult& fit) {
       v["convention"] = "of the values a whole turn apart within " + b.joint +
                         "'s limits (the same geometry), the one nearest zero is reported";
     }
+    v["std"] = joint_std.contains(b.joint) ? joint_std[b.joint] : json(nullptr);
     v["alternatives"] = alternatives;
     verdicts[b.joint] = v;
   }
@@ -107,6 +109,7 @@ json JointVerdictsJson(const KinematicModel& model, const FitResult& fit) {
     verdicts[j.name] = {{"verdict", JointVerdictName(JointVerdict::kNotSeen)},
                         {"link", model.links()[static_cast<size_t>(j.child_link)].name},
                         {"reason", "not fitted: the fit stopped before the joints"},
+                        {"std", nullptr},
                         {"alternatives", json::array()}};
   }
   return verdicts;
@@ -165,7 +168,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"T_world_base", PoseRows(fit.T_world_base)}}},
           {"joints", joints},
           {"joint_std", joint_std},
-          {"joint_verdicts", JointVerdictsJson(model, fit)},
+          {"joint_status", JointStatusJson(model, fit, joint_std)},
           {"base_std", base_std},
           {"stations",
            {{"aligned", !fit.stations.stations.empty()},
@@ -178,7 +181,8 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"base_rough", fit.timings.base_rough},
             {"base_precise", fit.timings.base_precise},
             {"chain", fit.timings.chain},
-            {"refine", fit.timings.refine}}},
+            {"refine", fit.timings.refine},
+            {"alternatives", fit.timings.alternatives}}},
           {"mixed_pixels_removed", fit.mixed_pixels},
           {"coverings",
            {{"matched", coverings.matched},

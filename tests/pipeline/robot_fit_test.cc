@@ -241,9 +241,10 @@ TEST(RobotFitTest, ResultJsonOfAFitStoppedBeforeTheChain) {
   const nlohmann::json result = FitResultJson(model, AssetKind::kArticulated, FitOptions(), fit);
   EXPECT_FALSE(result["joint_std"].empty());
   for (const auto& [joint, std] : result["joint_std"].items()) EXPECT_TRUE(std.is_null()) << joint;
-  EXPECT_EQ(result["joint_verdicts"].size(), result["joint_std"].size());
-  for (const auto& [joint, verdict] : result["joint_verdicts"].items()) {
+  EXPECT_EQ(result["joint_status"].size(), result["joint_std"].size());
+  for (const auto& [joint, verdict] : result["joint_status"].items()) {
     EXPECT_EQ(verdict["verdict"], "not_seen") << joint;
+    EXPECT_TRUE(verdict["std"].is_null()) << joint;
   }
   EXPECT_FALSE(result["quality"]["ok"].get<bool>());
 }
@@ -288,8 +289,11 @@ TEST(RobotFitTest, BareFlangeIsUnobservableAndTheFitOk) {
   EXPECT_EQ(fit.q[j6], 0.0);  // the convention
   const nlohmann::json result = FitResultJson(model, AssetKind::kArticulated, FitOptions(), fit);
   EXPECT_TRUE(result["joint_std"]["joint_6"].is_null()) << result["joint_std"].dump();
-  EXPECT_EQ(result["joint_verdicts"]["joint_6"]["verdict"], "unobservable");
-  EXPECT_EQ(result["joint_verdicts"]["joint_5"]["verdict"], "ok");
+  EXPECT_EQ(result["joint_status"]["joint_6"]["verdict"], "unobservable");
+  EXPECT_TRUE(result["joint_status"]["joint_6"]["std"].is_null());
+  EXPECT_EQ(result["joint_status"]["joint_5"]["verdict"], "ok");
+  EXPECT_EQ(result["joint_status"]["joint_5"]["std"], result["joint_std"]["joint_5"]);
+  EXPECT_TRUE(result["joint_status"]["joint_5"]["std"].is_number());
   for (const JointError& e : errors.joints) {
     if (e.name != "joint_6") {
       EXPECT_LT(e.error, 0.05 * kDeg) << e.name;

@@ -36,9 +36,15 @@ TEST_F(CliTest, FitWritesTheResultContract) {
     EXPECT_TRUE(result["joints"].contains(joint)) << joint;
   }
   for (const char* stage :
-       {"load", "edges", "base_rough", "base_precise", "chain", "refine", "total"}) {
+       {"load", "edges", "base_rough", "base_precise", "chain", "refine", "alternatives",
+        "total"}) {
     EXPECT_TRUE(result["timing_s"].contains(stage)) << stage;
   }
+  // The alternatives' checks are a part of the stages they run in.
+  EXPECT_LE(result["timing_s"]["alternatives"].get<double>(),
+            result["timing_s"]["base_precise"].get<double>() +
+                result["timing_s"]["chain"].get<double>() +
+                result["timing_s"]["refine"].get<double>());
   EXPECT_TRUE(result["quality"]["ok"].get<bool>()) << result["quality"].dump();
   EXPECT_EQ(result["mixed_pixels_removed"].get<size_t>(), 0u);  // not asked for
   EXPECT_TRUE(result["quality"]["per_link"].contains("link_2"));
@@ -63,10 +69,11 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   // A verdict for every independent joint, in result.json and as comments
   // in the joint states and the calibrated URDF.
   for (const char* joint : {"joint_1", "joint_2"}) {
-    EXPECT_EQ(result["joint_verdicts"][joint]["verdict"], "ok") << result["joint_verdicts"].dump();
-    EXPECT_TRUE(result["joint_verdicts"][joint]["alternatives"].empty());
+    EXPECT_EQ(result["joint_status"][joint]["verdict"], "ok") << result["joint_status"].dump();
+    EXPECT_TRUE(result["joint_status"][joint]["alternatives"].empty());
+    EXPECT_EQ(result["joint_status"][joint]["std"], result["joint_std"][joint]);
   }
-  EXPECT_FALSE(result["joint_verdicts"].contains("cylinder_joint"));
+  EXPECT_FALSE(result["joint_status"].contains("cylinder_joint"));
   const std::string yaml = Slurp(Path("j.yaml"));
   EXPECT_NE(yaml.find("name: [joint_1, joint_2"), std::string::npos);
   EXPECT_NE(yaml.find("# verdicts: joint_1=ok joint_2=ok"), std::string::npos) << yaml;

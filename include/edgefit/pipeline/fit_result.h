@@ -16,7 +16,7 @@
 
 namespace edgefit {
 
-// Extension: what the scan says of one joint (result.json joint_verdicts).
+// Extension: what the scan says of one joint (result.json joint_status).
 //  kOk            the scan pins it
 //  kAmbiguous     another value fits about as well, or better (a wrong basin)
 //  kUnobservable  no scan could pin it: the geometry it moves looks the same
@@ -66,6 +66,10 @@ struct FitTimings {
   double edges = 0.0, stations = 0.0, base_rough = 0.0, base_precise = 0.0, chain = 0.0,
          refine = 0.0,
          total = 0.0;  // [s]
+  // Of base_precise, chain and refine: the whole-model alternatives (the
+  // base and chain fitted from each alternative rough pose, every joint
+  // swept again at the final values, the pinning test) [s].
+  double alternatives = 0.0;
 };
 
 struct FitResult {
