@@ -1,7 +1,8 @@
 # The end-to-end robot fit (paper Sec. 5) on a small virtual scan: accuracy
-# against the ground truth, thread-count determinism, a scan without the robot.
+# against the ground truth, thread-count determinism; the negative set (scans
+# that do not hold the model as given).
 edgefit_add_test(pipeline_test SINGLE_PROCESS
-  SOURCES pipeline/robot_fit_test.cc
+  SOURCES pipeline/robot_fit_test.cc pipeline/negative_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::scene edgefit::model glog::glog
        OpenMP::OpenMP_CXX)
 # The conveyance pipeline (paper Sec. 6) on a small virtual scan of the
