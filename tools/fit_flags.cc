@@ -7,7 +7,9 @@ DEFINE_string(kind, "auto",
               "auto | articulated | conveyance: the pipeline (conveyance: the base's rough pose "
               "from the arm tips, Sec. 6.1); auto takes a model whose joints are all prismatic "
               "for a conveyance system.");
-DEFINE_string(weighting, "edge", "edge: Eq. (6) weights in every stage; uniform: all 1.");
+DEFINE_string(weighting, "uniform",
+              "uniform: every correspondence weight 1 (measured better); edge: the paper's "
+              "Eq. (6) weights (--w_high at edge points) in every stage.");
 DEFINE_string(loss, "trivial",
               "Loss of the precise ICP residuals: trivial, huber, cauchy, soft_l1, arctan, tukey.");
 DEFINE_double(loss_scale_mm, 5.0, "Scale of --loss [mm].");
