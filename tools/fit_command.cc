@@ -235,11 +235,12 @@ int RunFit(const Command& command) {
       unobservable.empty() ? "" : "; unobservable (no scan pins them, reported at their zero):",
       unobservable.c_str());
   std::printf(
-      "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, "
-      "%s %.2f s, total %.2f s (load %.2f s)\n",
+      "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, stations "
+      "%.2f s, %s %.2f s (of these, checking the alternatives %.2f s), total %.2f s (load "
+      "%.2f s)\n",
       fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain,
-      options.refinement.chain.refine ? "refine" : "covariance", fit.timings.refine, total,
-      load_seconds);
+      fit.timings.stations, options.refinement.chain.refine ? "refine" : "covariance",
+      fit.timings.refine, fit.timings.alternatives, total, load_seconds);
   return kExitOk;
 }
 

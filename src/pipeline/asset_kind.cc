@@ -29,7 +29,6 @@ FitOptions FitOptionsFor(AssetKind kind) {
   if (kind == AssetKind::kConveyance) {
     options.base.method = BaseOptions::Method::kArmTips;
     options.chain.sweep.max_view_gap = 0.01;
-    options.base.hypotheses.alternatives = 1;
     for (WeightedIcpOptions* icp :
          {&options.base.icp, &options.chain.joint_icp, &options.chain.subtree_icp}) {
       icp->quality_max_view_gap = 0.01;

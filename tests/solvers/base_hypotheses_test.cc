@@ -32,9 +32,10 @@ TEST(BaseHypothesesTest, BestFirstThenDistinctRunnersUpWithinTheMargin) {
   std::vector<Pose> candidates = {PoseFromXyYaw(0.5, 0.0, 0.0), PoseFromXyYaw(0.0005, 0.0, M_PI),
                                   PoseFromXyYaw(0.0, 0.0, 0.0), PoseFromXyYaw(0.01, 0.0, 0.0)};
   BaseHypothesesOptions options;
+  options.alternatives = 0;
   std::vector<Pose> roughs = RankBaseHypotheses(&candidates, Eigen::Vector3d(1, 1, 1), true, loss,
                                                 samples, options, &Quiet);
-  ASSERT_EQ(roughs.size(), 1u);  // no alternatives by default
+  ASSERT_EQ(roughs.size(), 1u);  // the best alone
   EXPECT_NEAR(roughs[0].translation().x(), 0.0, 1e-12);
   options.alternatives = 2;
   roughs = RankBaseHypotheses(&candidates, Eigen::Vector3d(1, 1, 1), true, loss, samples, options,
