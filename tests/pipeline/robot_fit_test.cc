@@ -167,7 +167,6 @@ TEST(RobotFitTest, BaseHintTakesTheHeightFromTheFloor) {
   }
 }
 
-
 // result.json of a fit that stopped at the base's rough stage (as Fit()
 // leaves it: zero joints, no bodies, no covariance): every spread null,
 // every joint not seen.
