@@ -68,7 +68,10 @@ TEST_F(CliTest, BenchTwoStationsDoNotTurnTheBase) {
   GTEST_SKIP() << "the release suite checks it; under the sanitizers a robot fit exercises no "
                   "other code than pipeline_test's";
 #endif
-  const RunResult r = Run("bench --assets=robot --only=home --scenes=with --weightings=uniform "
+  const RunResult r = Run("bench --assets=robot --robot_urdf=" + kAssets +
+                          "robot/robot.urdf --robot_attach=" + kAssets +
+                          "robot/weld_gun.urdf@tool0 --robot_postures=" + kAssets +
+                          "robot/postures.json --only=home --scenes=with --weightings=uniform "
                           "--spacing_mm=3 --scanners=2 --out_json=" +
                           Path("two_stations.json"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
