@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "edgefit/io/e57.h"
 #include "edgefit/io/pcd.h"
 #include "edgefit/io/ply.h"
 #include "edgefit/io/ptx.h"
@@ -10,7 +11,7 @@
 namespace edgefit {
 namespace {
 
-enum class Format { kPtx, kPcd, kPly, kUnknown };
+enum class Format { kPtx, kPcd, kPly, kE57, kUnknown };
 
 Format FormatOf(const std::string& path) {
   const size_t dot = path.find_last_of('.');
@@ -22,11 +23,12 @@ Format FormatOf(const std::string& path) {
   if (ext == "ptx") return Format::kPtx;
   if (ext == "pcd") return Format::kPcd;
   if (ext == "ply") return Format::kPly;
+  if (ext == "e57") return Format::kE57;
   return Format::kUnknown;
 }
 
 Status Unknown(const std::string& path) {
-  return Status::Error(path + ": unknown scan format (expected a .ptx, .pcd or .ply file)");
+  return Status::Error(path + ": unknown scan format (expected a .ptx, .pcd, .ply or .e57 file)");
 }
 
 }  // namespace
@@ -36,6 +38,7 @@ Status ReadScans(const std::string& path, const ReadOptions& options, ScanSet* s
     case Format::kPtx: return ReadPtx(path, options, scans);
     case Format::kPcd: return ReadPcd(path, options, scans);
     case Format::kPly: return ReadPly(path, options, scans);
+    case Format::kE57: return ReadE57(path, options, scans);
     case Format::kUnknown: break;
   }
   return Unknown(path);
@@ -50,6 +53,7 @@ Status WriteScans(const std::string& path, const ScanSet& scans, const WriteOpti
       }
       return WritePcd(path, scans.scans[0], options);
     case Format::kPly: return WritePly(path, scans, options);
+    case Format::kE57: return WriteE57(path, scans);
     case Format::kUnknown: break;
   }
   return Unknown(path);

@@ -1,4 +1,4 @@
-// Scan files by extension: .ptx (ptx.h), .pcd (pcd.h), .ply (ply.h).
+// Scan files by extension: .ptx (ptx.h), .pcd (pcd.h), .ply (ply.h), .e57 (e57.h).
 // The one entry point the command line uses to load and save ScanSets.
 #ifndef EDGEFIT_IO_SCAN_IO_H_
 #define EDGEFIT_IO_SCAN_IO_H_
@@ -18,8 +18,9 @@ namespace edgefit {
 // unknown extension or a scan without valid points.
 Status ReadScans(const std::string& path, const ReadOptions& options, ScanSet* scans);
 
-// Writes `scans` to `path` atomically: PTX holds all organized scans; PCD
-// exactly one scan; PLY the valid points of all scans in world coordinates.
+// Writes `scans` to `path` atomically: PTX and E57 hold all scans (PTX the
+// organized ones); PCD exactly one scan; PLY the valid points of all scans in
+// world coordinates.
 Status WriteScans(const std::string& path, const ScanSet& scans, const WriteOptions& options);
 
 }  // namespace edgefit
