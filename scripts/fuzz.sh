@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the readers with libFuzzer (clang from Debian), each under ASan and
 # UBSan: any input must parse or fail with a Status.
-#   ./scripts/fuzz.sh READER SECONDS     READER: ptx, pcd, ply, urdf or all
+#   ./scripts/fuzz.sh READER SECONDS     READER: ptx, pcd, ply, e57, urdf or all
 # Starts from the kept corpus (fuzz/corpus/READER, read only) and the inputs
 # found before (build/fuzz/corpus/READER). A crash, leak or undefined
 # behaviour stops the run with exit 1 and leaves the input in
@@ -9,10 +9,10 @@
 # tests/model) and add it to the kept corpus once fixed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-usage="usage: scripts/fuzz.sh ptx|pcd|ply|urdf|all SECONDS"
+usage="usage: scripts/fuzz.sh ptx|pcd|ply|e57|urdf|all SECONDS"
 reader=${1:?$usage}
 seconds=${2:?$usage}
-all=(ptx pcd ply urdf)
+all=(ptx pcd ply e57 urdf)
 if [[ $reader == all ]]; then readers=("${all[@]}"); else readers=("$reader"); fi
 for r in "${readers[@]}"; do
   [[ " ${all[*]} " == *" $r "* ]] || { echo "fuzz: unknown reader '$r'; $usage" >&2; exit 2; }

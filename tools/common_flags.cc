@@ -2,7 +2,7 @@
 
 #include "edgefit/scanner/asset_scan.h"
 
-DEFINE_string(scan, "", "Scan file(s): .ptx, .pcd or .ply; several as a comma list.");
+DEFINE_string(scan, "", "Scan file(s): .ptx, .pcd, .ply or .e57; several as a comma list.");
 DEFINE_string(urdf, "",
               "URDF of the equipment (meshes resolved relative to it or via package://).");
 DEFINE_string(attach, "",
@@ -16,8 +16,8 @@ DEFINE_string(labels, "",
               "Per-cell labels sidecar of a virtual scan (format: include/edgefit/scanner/"
               "label_file.h): written by scan; read by edges to score against the true edges.");
 DEFINE_string(out, "",
-              "Output. scan: the scan, .ptx (all scans in one file) or .pcd (one file per scan: "
-              "F_0.pcd, ...); fit: result.json (base pose, every non-fixed joint, timing_s, "
+              "Output. scan: the scan, .ptx or .e57 (all scans in one file) or .pcd (one file per "
+              "scan: F_0.pcd, ...); fit: result.json (base pose, every non-fixed joint, timing_s, "
               "quality).");
 DEFINE_string(truth, "",
               "Ground truth JSON of a virtual scan (joints, T_world_base, scanners, settings). "

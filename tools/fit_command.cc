@@ -5,7 +5,7 @@
 //               [--kind=auto|articulated|conveyance]
 //               [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]
 //               [--init=x,y,yaw_deg] [--truth=T.json] [--out_joint_states=J.yaml]
-//               [--out_urdf=U.urdf] [--out_ply=M.ply] [--out_background=B.ptx]
+//               [--out_urdf=U.urdf] [--out_ply=M.ply] [--out_background=B.ptx|B.e57]
 //               [--threads=N] [--seed=N]
 #include <omp.h>
 
@@ -39,8 +39,8 @@ DEFINE_string(out_urdf, "",
               "the fitted base pose (joint values in a comment).");
 
 DEFINE_string(out_background, "",
-              "Optional output: the scan with the fitted model's points removed (.ptx, .pcd or "
-              ".ply): the scanned equipment is replaced by its model.");
+              "Optional output: the scan with the fitted model's points removed (.ptx, .pcd, "
+              ".ply or .e57): the scanned equipment is replaced by its model.");
 DEFINE_double(
     background_distance_mm, 8.0,
     "--out_background: points within this of the fitted model's surface are removed [mm].");

@@ -4,7 +4,7 @@
 //   edgefit scan --urdf=F [--attach=...] (--joints=... | --posture=P.json:NAME |
 //                --random_pose) [--seed=N] [--base=x,y,yaw_deg] [--accessories]
 //                [--scanners=N] [--spacing_mm=1.7] [--noise_mm=1]
-//                --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]
+//                --out=F.ptx|F.e57|F.pcd --truth=F.json [--labels=F.bin]
 #include <omp.h>
 
 #include <chrono>
@@ -103,10 +103,12 @@ Status ChooseJoints(const KinematicModel& model, const Pose& T_world_base,
 
 Status ValidateFlags() {
   if (FLAGS_urdf.empty()) return Status::Error("--urdf is required");
-  if (FLAGS_out.empty()) return Status::Error("--out is required (.ptx or .pcd)");
+  if (FLAGS_out.empty()) return Status::Error("--out is required (.ptx, .e57 or .pcd)");
   if (FLAGS_truth.empty()) return Status::Error("--truth is required");
   const std::string ext = FLAGS_out.size() >= 4 ? FLAGS_out.substr(FLAGS_out.size() - 4) : "";
-  if (ext != ".ptx" && ext != ".pcd") return Status::Error("--out must end in .ptx or .pcd");
+  if (ext != ".ptx" && ext != ".e57" && ext != ".pcd") {
+    return Status::Error("--out must end in .ptx, .e57 or .pcd");
+  }
   if (FLAGS_scanners < 1 || FLAGS_scanners > 64) return Status::Error("--scanners must be 1..64");
   if (!(FLAGS_spacing_mm > 0.05 && FLAGS_spacing_mm < 1000)) {
     return Status::Error("--spacing_mm must be in (0.05, 1000)");
@@ -255,7 +257,7 @@ Command ScanCommand() {
           "               [--base=x,y,yaw_deg] [--accessories] [--scanners=3 | --scanner_at=x,y,z[,yaw]:...]\n"
           "               [--spacing_mm=1.7]"
           " [--noise_mm=1] [--sensor=ideal|realistic] [--beam=faro_focus] [--jackets]\n"
-          "               --out=F.ptx|F.pcd --truth=F.json [--labels=F.bin]\n"
+          "               --out=F.ptx|F.e57|F.pcd --truth=F.json [--labels=F.bin]\n"
           "Example:\n"
           "  edgefit scan --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
           "    --posture=assets/robot/postures.json:weld_low --accessories --seed=7 \\\n"
