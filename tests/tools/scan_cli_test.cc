@@ -1,6 +1,7 @@
 // edgefit scan through the command line: outputs, determinism, read-back
 // through edgefit info, and bad input without partial output.
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -65,6 +66,44 @@ TEST_F(ScanCliTest, SameSeedSameBytesAnyThreadCount) {
   const RunResult c = Run(SmallScanArgs(Path("c.ptx"), Path("c.json")) + " --seed=4");
   ASSERT_EQ(c.exit_code, 0) << c.err;
   EXPECT_NE(Slurp(Path("a.ptx")), Slurp(Path("c.ptx")));
+}
+
+// The same scan written as E57 and as PTX reads back the same (grids,
+// valid points, poses, lattices), and a damaged E57 is refused with exit 2.
+TEST_F(ScanCliTest, E57HoldsTheSameScansAsPtx) {
+  ASSERT_EQ(Run(SmallScanArgs(Path("arm.e57"), Path("e.json"))).exit_code, 0);
+  ASSERT_EQ(Run(SmallScanArgs(Path("arm.ptx"), Path("p.json"))).exit_code, 0);
+  const RunResult e57 = Run("info --json --scan=" + Path("arm.e57"));
+  const RunResult ptx = Run("info --json --scan=" + Path("arm.ptx"));
+  ASSERT_EQ(e57.exit_code, 0) << e57.err;
+  ASSERT_EQ(ptx.exit_code, 0) << ptx.err;
+  nlohmann::json a = nlohmann::json::parse(e57.out), b = nlohmann::json::parse(ptx.out);
+  ASSERT_EQ(a["scans"].size(), 2u);
+  for (size_t s = 0; s < 2; ++s) {  // the pose through a quaternion: to 1e-12
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        EXPECT_NEAR(a["scans"][s]["T_world_scanner"][r][c].get<double>(),
+                    b["scans"][s]["T_world_scanner"][r][c].get<double>(), 1e-12);
+      }
+    }
+  }
+  for (nlohmann::json* j : {&a, &b}) {
+    j->erase("files");
+    for (auto& s : (*j)["scans"]) s.erase("source"), s.erase("T_world_scanner");
+  }
+  EXPECT_EQ(a, b);
+
+  std::string bytes = Slurp(Path("arm.e57"));
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 1);
+  {
+    std::ofstream damaged(Path("damaged.e57"), std::ios::binary);
+    damaged << bytes;
+  }
+  const RunResult bad = Run("fit --urdf=" + kModel + " --scan=" + Path("damaged.e57") + " --out=" + Path("r.json"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("damaged.e57: page "), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("fails its CRC-32C checksum"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(Path("r.json")));
 }
 
 TEST_F(ScanCliTest, ExplicitScannerPositions) {
