@@ -5,10 +5,12 @@
 //                --random_pose) [--seed=N] [--base=x,y,yaw_deg] [--accessories]
 //                [--scanners=N] [--spacing_mm=1.7] [--noise_mm=1]
 //                --out=F.ptx|F.e57|F.pcd --truth=F.json [--labels=F.bin]
+//   edgefit scan --scene=cell.json [same options] : several assets in one cell
 #include <omp.h>
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <iostream>
 
@@ -21,6 +23,7 @@
 #include "edgefit/model/joint_values.h"
 #include "edgefit/scanner/random_joints.h"
 #include "edgefit/scanner/asset_scan.h"
+#include "edgefit/scanner/cell_scene.h"
 #include "edgefit/scanner/label_file.h"
 #include "edgefit/scanner/truth.h"
 #include "edgefit/scanner/virtual_scanner.h"
@@ -42,6 +45,10 @@ DEFINE_string(sensor, "ideal",
               "as-built surfaces), or effects joined by '+': mixed_pixels, incidence, stations, "
               "as_built, jackets.");
 DEFINE_int32(clutter, 4, "Clutter objects (pillars, boxes, a fence panel) away from the asset.");
+DEFINE_string(scene, "",
+              "A cell: several assets from a scene file (include/edgefit/scanner/cell_scene.h) "
+              "instead of --urdf, --attach, --joints, --posture, --random_pose, --base; the truth "
+              "holds every asset, the labels number the assets' links in order.");
 
 namespace edgefit::tools {
 namespace {
@@ -102,7 +109,12 @@ Status ChooseJoints(const KinematicModel& model, const Pose& T_world_base,
 }
 
 Status ValidateFlags() {
-  if (FLAGS_urdf.empty()) return Status::Error("--urdf is required");
+  if (FLAGS_scene.empty() && FLAGS_urdf.empty()) return Status::Error("--urdf (or --scene) is required");
+  if (!FLAGS_scene.empty() && (!FLAGS_urdf.empty() || !FLAGS_attach.empty() || !FLAGS_joints.empty() ||
+                               !FLAGS_posture.empty() || FLAGS_random_pose || FLAGS_base != "0,0,0")) {
+    return Status::Error("--scene names the assets: drop --urdf, --attach, --joints, --posture, "
+                         "--random_pose and --base");
+  }
   if (FLAGS_out.empty()) return Status::Error("--out is required (.ptx, .e57 or .pcd)");
   if (FLAGS_truth.empty()) return Status::Error("--truth is required");
   const std::string ext = FLAGS_out.size() >= 4 ? FLAGS_out.substr(FLAGS_out.size() - 4) : "";
@@ -121,7 +133,7 @@ Status ValidateFlags() {
 
 // Writes the scan(s), the truth and the labels. Each file is atomic; if a
 // later one fails, the earlier ones are removed: no partial output.
-Status WriteOutputs(const Truth& truth, const VirtualScan& result) {
+Status WriteOutputs(const std::function<Status()>& write_truth, const VirtualScan& result) {
   std::vector<std::string> written;
   auto fail = [&written](const Status& status) {
     for (const std::string& path : written) std::remove(path.c_str());
@@ -144,7 +156,7 @@ Status WriteOutputs(const Truth& truth, const VirtualScan& result) {
     if (!s.ok()) return fail(s);
     written.push_back(FLAGS_out);
   }
-  Status s = WriteTruthJson(FLAGS_truth, truth);
+  Status s = write_truth();
   if (!s.ok()) return fail(s);
   written.push_back(FLAGS_truth);
   if (!FLAGS_labels.empty()) {
@@ -158,10 +170,107 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The scan options of the flags; scanners placed around `box` (every asset).
+Status ScanOptionsFromFlags(const Eigen::AlignedBox3d& box, AssetScanOptions* options) {
+  options->accessories = FLAGS_accessories;
+  options->clutter = FLAGS_clutter;
+  options->scanners = FLAGS_scanners;
+  if (!FLAGS_scanner_at.empty()) {
+    EDGEFIT_RETURN_IF_ERROR(ParseScannerPositions(FLAGS_scanner_at, box, &options->T_world_scanners));
+  }
+  options->scan.spacing = FLAGS_spacing_mm * 1e-3;
+  options->scan.noise_sigma = FLAGS_noise_mm * 1e-3;
+  options->scan.max_range = FLAGS_max_range_m;
+  options->scan.full_dome = FLAGS_full_dome;
+  options->seed = FLAGS_seed;
+  return SensorOptionsFromFlags(FLAGS_sensor, options);
+}
+
+// The truth of one asset of a scan made with `options`.
+Truth AssetTruth(const std::string& urdf, const std::vector<AttachSpec>& specs,
+                 const KinematicModel& model, const std::vector<double>& q, const Pose& T_world_base,
+                 double x, double y, double yaw, int first_link, const AssetScanOptions& options,
+                 const std::vector<Pose>& T_world_scanners, const VirtualScan& result) {
+  Truth truth;
+  truth.urdf = urdf;
+  for (const AttachSpec& spec : specs) truth.attachments.push_back(spec.path + "@" + spec.parent_link);
+  truth.joints = NamedJointValues(model, q);
+  truth.T_world_base = T_world_base;
+  truth.base_x = x;
+  truth.base_y = y;
+  truth.base_yaw = yaw;
+  truth.T_world_scanners = T_world_scanners;
+  truth.seed = FLAGS_seed;
+  VirtualScanOptions scan_options = options.scan;
+  scan_options.seed = AssetScanSeed(FLAGS_seed, AssetScanStream::kNoise);
+  truth.settings = MakeTruthSettings(scan_options, static_cast<int>(T_world_scanners.size()),
+                                     FLAGS_accessories, FLAGS_random_pose);
+  truth.sensor.name = FLAGS_sensor + (FLAGS_jackets ? "+jackets" : "");
+  truth.sensor.beam = options.scan.beam;
+  truth.sensor.range_noise = options.scan.range_noise;
+  truth.sensor.as_built = options.as_built;
+  truth.sensor.station_residuals = options.station_residuals;
+  if (options.jackets.enabled) {
+    for (int link : JacketLinks(model, options.jackets)) {
+      truth.sensor.jackets.push_back(model.links()[link].name);
+    }
+  }
+  for (const OrganizedScan& scan : result.scans.scans) {
+    truth.sensor.T_world_scanners_written.push_back(scan.T_world_scanner());
+  }
+  truth.counts = CountLabels(result, model, first_link);
+  return truth;
+}
+
+void PrintSummary(const VirtualScan& result, size_t scanners, double cast_seconds,
+                  std::chrono::steady_clock::time_point start) {
+  const size_t valid = result.scans.TotalValid();
+  std::printf("scanned %zu rays from %zu scanners: %zu points (%.1f%%) in %.2f s (%.1f M rays/s); "
+              "total %.2f s\n",
+              result.rays, scanners, valid,
+              100.0 * static_cast<double>(valid) / std::max<size_t>(1, result.rays), cast_seconds,
+              static_cast<double>(result.rays) / std::max(1e-9, cast_seconds) * 1e-6,
+              SecondsSince(start));
+  std::printf("wrote %s, %s%s%s\n", FLAGS_out.c_str(), FLAGS_truth.c_str(),
+              FLAGS_labels.empty() ? "" : ", ", FLAGS_labels.c_str());
+}
+
+int RunCellScan(const Command& command, std::chrono::steady_clock::time_point start) {
+  std::vector<CellSceneAsset> scene;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, LoadCellScene(FLAGS_scene, FLAGS_seed, &scene));
+  std::vector<CellAsset> assets;
+  Eigen::AlignedBox3d cell_box;
+  for (const CellSceneAsset& a : scene) {
+    assets.push_back({&a.model, a.q, a.T_world_base});
+    cell_box.extend(a.model.BoundingBox(a.q, a.T_world_base));
+  }
+  AssetScanOptions options;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScanOptionsFromFlags(cell_box, &options));
+  Progress("scan: a cell of " + std::to_string(scene.size()) + " assets");
+  VirtualScan result;
+  std::vector<Pose> T_world_scanners;
+  std::vector<int> first_link;
+  const auto cast_start = std::chrono::steady_clock::now();
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScanCell(assets, options, &result, &T_world_scanners, &first_link));
+  const double cast_seconds = SecondsSince(cast_start);
+  std::vector<CellTruthAsset> truth;
+  for (size_t a = 0; a < scene.size(); ++a) {
+    const CellSceneAsset& s = scene[a];
+    truth.push_back({s.name, first_link[a],
+                     AssetTruth(s.urdf, s.attachments, s.model, s.q, s.T_world_base, s.base_x, s.base_y,
+                                s.base_yaw, first_link[a], options, T_world_scanners, result)});
+  }
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, WriteOutputs([&truth] { return WriteCellTruthJson(FLAGS_truth, truth); }, result));
+  PrintSummary(result, T_world_scanners.size(), cast_seconds, start);
+  return kExitOk;
+}
+
 int RunScan(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ValidateFlags());
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   const auto start = std::chrono::steady_clock::now();
+  if (!FLAGS_scene.empty()) return RunCellScan(command, start);
 
   std::vector<AttachSpec> specs;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseAttachSpecList(FLAGS_attach, &specs));
@@ -177,19 +286,7 @@ int RunScan(const Command& command) {
   if (asset_box.isEmpty()) return BadInput(command, FLAGS_urdf + ": the model has no geometry to scan");
 
   AssetScanOptions options;
-  options.accessories = FLAGS_accessories;
-  options.clutter = FLAGS_clutter;
-  options.scanners = FLAGS_scanners;
-  if (!FLAGS_scanner_at.empty()) {
-    EDGEFIT_RETURN_IF_ERROR_EXIT(
-        command, ParseScannerPositions(FLAGS_scanner_at, asset_box, &options.T_world_scanners));
-  }
-  options.scan.spacing = FLAGS_spacing_mm * 1e-3;
-  options.scan.noise_sigma = FLAGS_noise_mm * 1e-3;
-  options.scan.max_range = FLAGS_max_range_m;
-  options.scan.full_dome = FLAGS_full_dome;
-  options.seed = FLAGS_seed;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, SensorOptionsFromFlags(FLAGS_sensor, &options));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScanOptionsFromFlags(asset_box, &options));
   // The window covers every non-background mesh: the model and its accessories.
   Progress("scan: casting rays from " +
            std::to_string(options.T_world_scanners.empty() ? FLAGS_scanners
@@ -201,48 +298,11 @@ int RunScan(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, ScanAsset(model, q, T_world_base, options, &result, &T_world_scanners));
   const double cast_seconds = SecondsSince(cast_start);
-
-  Truth truth;
-  truth.urdf = FLAGS_urdf;
-  for (const AttachSpec& spec : specs) truth.attachments.push_back(spec.path + "@" + spec.parent_link);
-  truth.joints = NamedJointValues(model, q);
-  truth.T_world_base = T_world_base;
-  truth.base_x = x;
-  truth.base_y = y;
-  truth.base_yaw = yaw;
-  truth.T_world_scanners = T_world_scanners;
-  truth.seed = FLAGS_seed;
-  VirtualScanOptions scan_options = options.scan;
-  scan_options.seed = AssetScanSeed(FLAGS_seed, AssetScanStream::kNoise);
-  truth.settings = MakeTruthSettings(scan_options, static_cast<int>(T_world_scanners.size()),
-                                     FLAGS_accessories,
-                                     FLAGS_random_pose);
-  truth.sensor.name = FLAGS_sensor + (FLAGS_jackets ? "+jackets" : "");
-  truth.sensor.beam = options.scan.beam;
-  truth.sensor.range_noise = options.scan.range_noise;
-  truth.sensor.as_built = options.as_built;
-  truth.sensor.station_residuals = options.station_residuals;
-  if (options.jackets.enabled) {
-    for (int link : JacketLinks(model, options.jackets)) {
-      truth.sensor.jackets.push_back(model.links()[link].name);
-    }
-  }
-  for (const OrganizedScan& scan : result.scans.scans) {
-    truth.sensor.T_world_scanners_written.push_back(scan.T_world_scanner());
-  }
-  truth.counts = CountLabels(result, model);
+  const Truth truth = AssetTruth(FLAGS_urdf, specs, model, q, T_world_base, x, y, yaw, 0, options,
+                                 T_world_scanners, result);
   EDGEFIT_RETURN_IF_ERROR_EXIT(
-      command, WriteOutputs(truth, result));
-
-  size_t valid = result.scans.TotalValid();
-  std::printf("scanned %zu rays from %zu scanners: %zu points (%.1f%%) in %.2f s (%.1f M rays/s); "
-              "total %.2f s\n",
-              result.rays, T_world_scanners.size(), valid,
-              100.0 * static_cast<double>(valid) / std::max<size_t>(1, result.rays), cast_seconds,
-              static_cast<double>(result.rays) / std::max(1e-9, cast_seconds) * 1e-6,
-              SecondsSince(start));
-  std::printf("wrote %s, %s%s%s\n", FLAGS_out.c_str(), FLAGS_truth.c_str(),
-              FLAGS_labels.empty() ? "" : ", ", FLAGS_labels.c_str());
+      command, WriteOutputs([&truth] { return WriteTruthJson(FLAGS_truth, truth); }, result));
+  PrintSummary(result, T_world_scanners.size(), cast_seconds, start);
   return kExitOk;
 }
 
@@ -258,11 +318,13 @@ Command ScanCommand() {
           "               [--spacing_mm=1.7]"
           " [--noise_mm=1] [--sensor=ideal|realistic] [--beam=faro_focus] [--jackets]\n"
           "               --out=F.ptx|F.e57|F.pcd --truth=F.json [--labels=F.bin]\n"
+          "  edgefit scan --scene=cell.json [the options above but the model's] --out=cell.e57 "
+          "--truth=cell_truth.json\n"
           "Example:\n"
           "  edgefit scan --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
           "    --posture=assets/robot/postures.json:weld_low --accessories --seed=7 \\\n"
           "    --out=robot.ptx --truth=robot_truth.json --labels=robot_labels.bin",
-          {"urdf", "attach", "joints", "posture", "random_pose", "seed", "base", "accessories",
+          {"urdf", "scene", "attach", "joints", "posture", "random_pose", "seed", "base", "accessories",
            "scanners", "scanner_at", "spacing_mm", "noise_mm", "sensor", "beam", "jackets", "max_range_m", "full_dome", "clutter", "out",
            "truth", "labels", "threads"},
           &RunScan};

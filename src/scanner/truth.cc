@@ -95,7 +95,7 @@ TruthSettings MakeTruthSettings(const VirtualScanOptions& options, int scanners,
   return s;
 }
 
-LabelCounts CountLabels(const VirtualScan& scan, const KinematicModel& model) {
+LabelCounts CountLabels(const VirtualScan& scan, const KinematicModel& model, int first_link) {
   LabelCounts counts;
   std::vector<uint64_t> per_link(model.links().size(), 0);
   for (const auto& labels : scan.labels) {
@@ -115,9 +115,8 @@ LabelCounts CountLabels(const VirtualScan& scan, const KinematicModel& model) {
       } else if (cls == kLabelAccessory) {
         ++counts.accessory;
       } else {
-        ++counts.link;
-        const int link = LinkOfLabel(cls);
-        if (link >= 0 && static_cast<size_t>(link) < per_link.size()) ++per_link[link];
+        const int link = LinkOfLabel(cls) - first_link;
+        if (link >= 0 && static_cast<size_t>(link) < per_link.size()) ++counts.link, ++per_link[link];
       }
     }
   }
@@ -135,7 +134,9 @@ const char* LabelsFormatDescription() {
          "| 0x2000 protective jacket";
 }
 
-Status WriteTruthJson(const std::string& path, const Truth& truth) {
+namespace {
+
+Json TruthToJson(const Truth& truth) {
   Json j;
   j["model"] = {{"urdf", truth.urdf}, {"attachments", truth.attachments}};
   Json joints = Json::object();
@@ -160,15 +161,12 @@ Status WriteTruthJson(const std::string& path, const Truth& truth) {
                  {"true_edge", c.true_edge},   {"per_link", per_link}};
   j["labels_format"] = LabelsFormatDescription();
   if (truth.sensor.realistic()) j["sensor"] = SensorJson(truth.sensor, c);
-  return WriteStringAtomically(path, j.dump(2) + "\n");
+  return j;
 }
 
-Status ReadTruthJson(const std::string& path, Truth* truth) {
-  std::string text;
-  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(path, &text));
-  const Json j = Json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded() || !j.is_object()) return Status::Error(path + ": not a JSON object");
+Status TruthFromJson(const Json& j, const std::string& path, Truth* truth) {
   auto fail = [&path](const std::string& what) { return Status::Error(path + ": " + what); };
+  if (!j.is_object()) return fail("not a JSON object");
   Truth t;
   // Every accessor below checks the type first: nlohmann throws on a mismatch.
   if (!j.contains("joints") || !j["joints"].is_object()) return fail("missing object 'joints'");
@@ -257,6 +255,67 @@ Status ReadTruthJson(const std::string& path, Truth* truth) {
     }
   }
   *truth = std::move(t);
+  return Status::Ok();
+}
+
+Status ParseJsonFile(const std::string& path, Json* j) {
+  std::string text;
+  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(path, &text));
+  *j = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (j->is_discarded() || !j->is_object()) return Status::Error(path + ": not a JSON object");
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status WriteTruthJson(const std::string& path, const Truth& truth) {
+  return WriteStringAtomically(path, TruthToJson(truth).dump(2) + "\n");
+}
+
+Status ReadTruthJson(const std::string& path, Truth* truth) {
+  Json j;
+  EDGEFIT_RETURN_IF_ERROR(ParseJsonFile(path, &j));
+  if (j.contains("assets")) {
+    return Status::Error(path + ": the truth of a cell (several assets): read it with ReadCellTruthJson");
+  }
+  return TruthFromJson(j, path, truth);
+}
+
+Status WriteCellTruthJson(const std::string& path, const std::vector<CellTruthAsset>& assets) {
+  Json j;
+  Json list = Json::array();
+  for (const CellTruthAsset& a : assets) {
+    Json one;
+    one["name"] = a.name;
+    one["first_label"] = LinkLabel(a.first_link);
+    const Json asset = TruthToJson(a.truth);
+    for (auto it = asset.begin(); it != asset.end(); ++it) one[it.key()] = it.value();
+    list.push_back(one);
+  }
+  j["assets"] = list;
+  return WriteStringAtomically(path, j.dump(2) + "\n");
+}
+
+Status ReadCellTruthJson(const std::string& path, std::vector<CellTruthAsset>* assets) {
+  Json j;
+  EDGEFIT_RETURN_IF_ERROR(ParseJsonFile(path, &j));
+  std::vector<CellTruthAsset> read;
+  if (!j.contains("assets")) {  // one asset: the single-asset layout
+    read.emplace_back();
+    EDGEFIT_RETURN_IF_ERROR(TruthFromJson(j, path, &read.back().truth));
+  } else {
+    if (!j["assets"].is_array()) return Status::Error(path + ": 'assets' is not an array");
+    for (const Json& a : j["assets"]) {
+      CellTruthAsset one;
+      if (a.is_object() && a.contains("name") && a["name"].is_string()) one.name = a["name"].get<std::string>();
+      if (a.is_object() && a.contains("first_label") && a["first_label"].is_number_unsigned()) {
+        one.first_link = LinkOfLabel(static_cast<uint16_t>(a["first_label"].get<unsigned>()));
+      }
+      EDGEFIT_RETURN_IF_ERROR(TruthFromJson(a, path + ": asset '" + one.name + "'", &one.truth));
+      read.push_back(std::move(one));
+    }
+  }
+  *assets = std::move(read);
   return Status::Ok();
 }
 

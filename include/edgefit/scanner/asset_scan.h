@@ -71,6 +71,23 @@ Status ScanAsset(const KinematicModel& model, const std::vector<double>& q,
                  const Pose& T_world_base, const AssetScanOptions& options, VirtualScan* result,
                  std::vector<Pose>* T_world_scanners);
 
+// One posed asset of a cell.
+struct CellAsset {
+  const KinematicModel* model = nullptr;
+  std::vector<double> q;
+  Pose T_world_base = Pose::Identity();
+};
+
+// A cell: several assets on one floor, each with its own accessories,
+// jackets and as-built surfaces, clutter around them all, scanners placed
+// around them all (or given). Link k of asset a is labelled
+// LinkLabel(first_link[a] + k): the assets' links counted in order. Asset 0
+// draws from the streams ScanAsset uses (a one-asset cell is ScanAsset's
+// scan, byte for byte); asset a > 0 from streams of SplitMix64::StreamSeed(seed, 1000 + a).
+Status ScanCell(const std::vector<CellAsset>& assets, const AssetScanOptions& options,
+                VirtualScan* result, std::vector<Pose>* T_world_scanners,
+                std::vector<int>* first_link);
+
 }  // namespace edgefit
 
 #endif  // EDGEFIT_SCANNER_ASSET_SCAN_H_

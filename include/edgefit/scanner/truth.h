@@ -93,8 +93,10 @@ std::vector<std::pair<std::string, double>> NamedJointValues(const KinematicMode
 // Settings of a scan from its options.
 TruthSettings MakeTruthSettings(const VirtualScanOptions& options, int scanners,
                                 bool accessories, bool random_pose);
-// Label statistics of a virtual scan; per_link names come from `model`.
-LabelCounts CountLabels(const VirtualScan& scan, const KinematicModel& model);
+// Label statistics of a virtual scan; per_link names come from `model`,
+// whose link k is labelled LinkLabel(first_link + k) (asset_scan.h, ScanCell);
+// `link` counts that model's cells only.
+LabelCounts CountLabels(const VirtualScan& scan, const KinematicModel& model, int first_link = 0);
 
 // The one-line description written as "labels_format".
 const char* LabelsFormatDescription();
@@ -103,6 +105,19 @@ const char* LabelsFormatDescription();
 Status WriteTruthJson(const std::string& path, const Truth& truth);
 // Reads a file written by WriteTruthJson; fails with "<path>: <problem>".
 Status ReadTruthJson(const std::string& path, Truth* truth);
+
+// The truth of a cell (edgefit scan --scene): {"assets": [{"name",
+// "first_label", ...one asset's layout above...}, ...]}; every asset
+// carries the scanners, settings and sensor too, and its counts' "link" and
+// "per_link" are its own links'.
+struct CellTruthAsset {
+  std::string name;
+  int first_link = 0;  // its link k is labelled LinkLabel(first_link + k)
+  Truth truth;
+};
+Status WriteCellTruthJson(const std::string& path, const std::vector<CellTruthAsset>& assets);
+// Reads a cell truth, or a one-asset truth as a cell of one (name "").
+Status ReadCellTruthJson(const std::string& path, std::vector<CellTruthAsset>* assets);
 
 }  // namespace edgefit
 
