@@ -13,6 +13,7 @@ Command EdgesCommand();
 Command FitCommand();
 Command BatchCommand();
 Command BenchCommand();
+Command CellCommand();
 
 }  // namespace edgefit::tools
 

@@ -16,6 +16,7 @@ const std::vector<Command>& AllCommands() {
       ScanCommand(),
       EdgesCommand(),
       FitCommand(),
+      CellCommand(),
       BatchCommand(),
       BenchCommand(),
   };

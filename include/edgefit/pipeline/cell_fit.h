@@ -1,0 +1,69 @@
+// Fits every instance of several models in the scans of one cell: each
+// model in the order given, instance after instance, Fit() on the points
+// that are left, the instance's points removed before the next (the paper's
+// purpose: the fitted equipment replaced by movable models, the rest kept
+// as the background). A model's search stops at its count, or at the first
+// fit that is not ok: that fit's message says why no further instance was
+// taken, and a not-ok fit is never counted as an instance.
+#ifndef EDGEFIT_PIPELINE_CELL_FIT_H_
+#define EDGEFIT_PIPELINE_CELL_FIT_H_
+
+#include <string>
+#include <vector>
+
+#include "edgefit/core/status.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/pipeline/fit.h"
+#include "edgefit/pipeline/fit_options.h"
+#include "edgefit/pipeline/fit_result.h"
+#include "edgefit/pipeline/model_points.h"
+#include "edgefit/scan/organized_scan.h"
+
+namespace edgefit {
+
+struct CellModel {
+  std::string name;
+  const KinematicModel* model = nullptr;
+  FitOptions options;
+  // Instances to find; 0 = every instance (until a fit is not ok).
+  int count = 0;
+};
+
+struct CellOptions {
+  // Each instance's points (within this of its fitted surface) leave the
+  // scans before the next fit; also the background's removal distance.
+  ModelPointsOptions removal;
+  // At most this many instances of one model with count 0.
+  int max_instances = 16;
+};
+
+struct CellInstance {
+  int model = -1;  // index into the models
+  int index = 0;   // 1, 2, ... within its model
+  FitResult fit;
+  size_t removed_points = 0;
+};
+
+struct CellModelOutcome {
+  int found = 0;
+  // Why the search of this model stopped: "" when its count was met, else
+  // the message of the fit that was not ok (or "at most N instances").
+  std::string stopped;
+  bool count_met = true;  // false when a count was asked and not reached
+};
+
+struct CellResult {
+  std::vector<CellInstance> instances;  // in the order found
+  std::vector<CellModelOutcome> models;
+  size_t points = 0, background_points = 0;
+  double seconds = 0.0;
+};
+
+// `scans` becomes the background: every found instance's points removed.
+// Fails (Status) where Fit() fails.
+Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
+               const ProgressFn& progress, ScanSet* scans, CellResult* result);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_PIPELINE_CELL_FIT_H_
