@@ -20,3 +20,8 @@ edgefit_add_test(linear_track_fit_test SINGLE_PROCESS
 edgefit_add_test(realistic_fit_test SINGLE_PROCESS
   SOURCES pipeline/realistic_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)
+# The cell fit: every instance of a model in a small virtual cell, the
+# background left; the instance crop.
+edgefit_add_test(cell_fit_test SINGLE_PROCESS
+  SOURCES pipeline/cell_fit_test.cc pipeline/instance_crop_test.cc
+  LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model edgefit_test_synthetic glog::glog)

@@ -156,6 +156,11 @@ int RunCell(const Command& command) {
                              {"found", o.found},
                              {"count_met", o.count_met},
                              {"stopped", o.stopped}});
+    if (o.rejected) {
+      out["models"].back()["rejected_fit_base_xyz"] = {o.T_world_base_rejected.translation().x(),
+                                                        o.T_world_base_rejected.translation().y(),
+                                                        o.T_world_base_rejected.translation().z()};
+    }
   }
   std::vector<bool> taken(truth.size(), false);
   out["instances"] = json::array();
@@ -164,8 +169,8 @@ int RunCell(const Command& command) {
     const LoadedModel& l = loaded[static_cast<size_t>(instance.model)];
     const std::string id = l.name + "_" + std::to_string(instance.index);
     json result = FitResultJson(l.model, l.kind, models[static_cast<size_t>(instance.model)].options, instance.fit);
-    json summary = {{"id", id}, {"model", l.name}, {"ok", instance.fit.ok}, {"removed_points", instance.removed_points},
-                    {"base", result["base"]}};
+    json summary = {{"id", id}, {"model", l.name}, {"ok", instance.fit.ok}, {"message", instance.fit.message},
+                    {"removed_points", instance.removed_points}, {"base", result["base"]}};
     const int match = truth.empty() ? -1 : MatchTruth(truth, taken, l.model, instance.fit.T_world_base);
     std::string scored = truth.empty() ? "" : "  (no truth asset within 0.5 m)";
     if (match >= 0) {
@@ -207,6 +212,7 @@ int RunCell(const Command& command) {
     std::printf("  %-16s base %.3f %.3f %.3f m, yaw %.2f deg, %zu points%s\n", id.c_str(), xyz.x(), xyz.y(),
                 xyz.z(), RpyFromRotation(instance.fit.T_world_base.linear()).z() * 180.0 / M_PI,
                 instance.removed_points, scored.c_str());
+    if (!instance.fit.ok) std::printf("    quality NOT OK: %s\n", instance.fit.message.c_str());
   }
   if (!truth.empty()) {
     json missed = json::array();
@@ -217,8 +223,11 @@ int RunCell(const Command& command) {
   }
   for (size_t m = 0; m < loaded.size(); ++m) {
     const CellModelOutcome& o = cell.models[m];
+    // The first reason only (all of them in the result's "stopped").
+    const size_t cut = o.stopped.find("; ");
+    const std::string reason = cut == std::string::npos ? o.stopped : o.stopped.substr(0, cut) + "; ...";
     std::printf("  %s: %d found%s%s\n", loaded[m].name.c_str(), o.found,
-                o.count_met ? "" : " (fewer than asked)", o.stopped.empty() ? "" : ("; stopped: " + o.stopped).c_str());
+                o.count_met ? "" : " (fewer than asked)", reason.empty() ? "" : ("; stopped: " + reason).c_str());
   }
   out["background"] = {{"points", cell.background_points}, {"removed_points", cell.points - cell.background_points},
                        {"distance_m", options.removal.distance}};

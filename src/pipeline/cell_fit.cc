@@ -4,7 +4,18 @@
 
 #include <chrono>
 
+#include "edgefit/scan/mixed_pixels.h"
+
 namespace edgefit {
+
+bool IsInstance(const FitResult& fit) {
+  bool base_ok = false;
+  for (const BodyQuality& body : fit.bodies) {
+    if (body.joint.empty()) base_ok = body.ok;
+    if (body.verdict == JointVerdict::kMismatch) return false;
+  }
+  return base_ok;
+}
 
 Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
                const ProgressFn& progress, ScanSet* scans, CellResult* result) {
@@ -16,6 +27,17 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
   auto say = [&progress](const std::string& line) {
     if (progress) progress(line);
   };
+  if (models.empty()) return Status::Ok();
+  const FitOptions& first = models.front().options;
+  if (first.remove_mixed_pixels) {
+    *scans = WithoutMixedPixels(*scans, first.mixed_pixels, &result->mixed_pixels);
+    say("cell: " + std::to_string(result->mixed_pixels) + " mixed pixels removed");
+  }
+  say("cell: edges on " + std::to_string(scans->TotalValid()) + " points");
+  EdgeDetectionResult edges;
+  EDGEFIT_RETURN_IF_ERROR(DetectEdges(*scans, first.edges, &edges));
+  result->edge_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (size_t m = 0; m < models.size(); ++m) {
     const CellModel& cell_model = models[m];
     CHECK(cell_model.model != nullptr);
@@ -24,14 +46,18 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
     while (outcome.found < wanted) {
       const std::string label = cell_model.name + " " + std::to_string(outcome.found + 1);
       say("cell: looking for " + label + " in " + std::to_string(scans->TotalValid()) + " points");
+      FitOptions fit_options = cell_model.options;
+      fit_options.crop.enabled = true;
       CellInstance instance;
       instance.model = static_cast<int>(m);
       instance.index = outcome.found + 1;
       EDGEFIT_RETURN_IF_ERROR(
-          Fit(*cell_model.model, *scans, cell_model.options,
+          FitWithEdges(*cell_model.model, *scans, edges, fit_options,
               [&](const std::string& line) { say(label + ": " + line); }, &instance.fit));
-      if (!instance.fit.ok) {
+      if (!IsInstance(instance.fit)) {
         outcome.stopped = instance.fit.message;
+        outcome.rejected = true;
+        outcome.T_world_base_rejected = instance.fit.T_world_base;
         break;
       }
       std::vector<std::vector<uint8_t>> marks;

@@ -25,29 +25,12 @@ struct Attempt {
   double loss = 0.0;  // Eq. (9) of the whole model
 };
 
-}  // namespace
-
-Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitOptions& options,
-           const ProgressFn& progress, FitResult* result) {
-  CHECK(result != nullptr);
-  const auto start = std::chrono::steady_clock::now();
-  auto say = [&progress](const std::string& line) {
-    if (progress) progress(line);
-  };
+// Options, a root link, and a model in metres.
+Status CheckFitInputs(const KinematicModel& model, const FitOptions& options) {
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("robot fit: " + error);
   if (model.root_link() < 0) return Status::Error("robot fit: the model has no root link");
-  *result = FitResult();
-  auto not_ok = [&](const std::string& message) {
-    result->ok = false;
-    result->message = message;
-    result->q = model.ZeroJoints();
-    result->timings.total = Since(start);
-    return Status::Ok();
-  };
-
-  const Eigen::Vector3d extent =
-      model.BoundingBox(model.ZeroJoints(), Pose::Identity()).sizes();
+  const Eigen::Vector3d extent = model.BoundingBox(model.ZeroJoints(), Pose::Identity()).sizes();
   if (!(extent.maxCoeff() <= options.samples.max_model_extent)) {
     char line[300];
     std::snprintf(line, sizeof(line),
@@ -57,6 +40,54 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
     const std::string& source = model.links()[static_cast<size_t>(model.root_link())].source;
     return Status::Error(source.empty() ? std::string(line) : source + ": " + line);
   }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitOptions& options,
+           const ProgressFn& progress, FitResult* result) {
+  CHECK(result != nullptr);
+  EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, options));  // before the edges' seconds
+  const auto start = std::chrono::steady_clock::now();
+  // Extension: mixed pixels off the scans.
+  ScanSet without_mixed;
+  size_t mixed_pixels = 0;
+  if (options.remove_mixed_pixels) {
+    without_mixed = WithoutMixedPixels(written_scans, options.mixed_pixels, &mixed_pixels);
+    if (progress) progress("mixed pixels: " + std::to_string(mixed_pixels) + " removed");
+  }
+  const ScanSet& scans = options.remove_mixed_pixels ? without_mixed : written_scans;
+
+  // Sec. 4: edge weights and normals.
+  if (progress) progress("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
+  EdgeDetectionResult edges;
+  EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
+  const double edge_seconds = Since(start);
+  EDGEFIT_RETURN_IF_ERROR(FitWithEdges(model, scans, edges, options, progress, result));
+  result->mixed_pixels = mixed_pixels;
+  result->timings.edges = edge_seconds;
+  result->timings.total += edge_seconds;
+  return Status::Ok();
+}
+
+Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
+                    const EdgeDetectionResult& edges, const FitOptions& options,
+                    const ProgressFn& progress, FitResult* result) {
+  CHECK(result != nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  auto say = [&progress](const std::string& line) {
+    if (progress) progress(line);
+  };
+  EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, options));
+  *result = FitResult();
+  auto not_ok = [&](const std::string& message) {
+    result->ok = false;
+    result->message = message;
+    result->q = model.ZeroJoints();
+    result->timings.total = Since(start);
+    return Status::Ok();
+  };
 
   // CAD samples: dense for the ICP stages, sparse for the sweeps.
   SamplingOptions sampling;
@@ -68,26 +99,7 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   cad.sweep = SampleModelSurfaces(model, sampling);
   cad.chain = ChainSamples(model, cad, options);
 
-  // Extension: mixed pixels off the scans.
-  auto stage = std::chrono::steady_clock::now();
-  ScanSet without_mixed;
-  if (options.remove_mixed_pixels) {
-    without_mixed = WithoutMixedPixels(written_scans, options.mixed_pixels, &result->mixed_pixels);
-    say("mixed pixels: " + std::to_string(result->mixed_pixels) + " removed");
-  }
-  const ScanSet& scans = options.remove_mixed_pixels ? without_mixed : written_scans;
-
-  // Sec. 4: edge weights and normals.
-  say("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
-  EdgeDetectionResult edges;
-  EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
-  result->timings.edges = Since(stage);
-
   const CellWeights* weights = options.uniform_weights ? nullptr : &edges.w_edge;
-  CorrespondenceSearch search(&scans, weights);
-  const ScanVisibility visibility(&scans);
-  WeightedIcp icp(&scans, &search, &edges.normals, options.residuals);
-  const JointSweep sweep(&search.lattice(), &visibility);
 
   // Sec. 5.1.1 / 6.1: the base body's rough poses.
   const Body base = MakeBody(model, model.root_link(), -1);
@@ -98,9 +110,29 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
                          "' has no mesh to register");
   }
   std::vector<Pose> roughs;  // best first
-  const Status rough =
-      RoughBasePoses(model, scans, edges.normals, base, cad, sweep, options, say, result, &roughs);
-  if (!rough.ok()) return not_ok(rough.message());
+  {
+    CorrespondenceSearch search(&scans, weights);
+    const ScanVisibility visibility(&scans);
+    const JointSweep sweep(&search.lattice(), &visibility);
+    const Status rough =
+        RoughBasePoses(model, scans, edges.normals, base, cad, sweep, options, say, result, &roughs);
+    if (!rough.ok()) return not_ok(rough.message());
+  }
+
+  // Extension: the rest on the rays near the rough base poses only.
+  ScanSet cropped;
+  if (options.crop.enabled) {
+    std::vector<Eigen::Vector3d> centers;
+    for (const Pose& T : roughs) centers.push_back(T.translation());
+    cropped = CropToRays(scans, centers, ModelReach(model) + options.crop.margin);
+    say("crop: " + std::to_string(cropped.TotalValid()) + " of " +
+        std::to_string(scans.TotalValid()) + " points on rays near the rough base poses");
+  }
+  const ScanSet& work = options.crop.enabled ? cropped : scans;
+  CorrespondenceSearch search(&work, weights);
+  const ScanVisibility visibility(&work);
+  WeightedIcp icp(&work, &search, &edges.normals, options.residuals);
+  const JointSweep sweep(&search.lattice(), &visibility);
 
   // Sec. 5.1.2 and 5.2-5.3 from each rough base pose kept: the base's
   // precise ICP, then the joints, parents first; the lowest Eq. (9) loss
@@ -150,9 +182,9 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   ScanSet aligned_scans;
   bool align = false;
   EDGEFIT_RETURN_IF_ERROR(
-      AlignStationsStage(model, scans, &search, weights, cad, options, say, result, &aligned_scans,
+      AlignStationsStage(model, work, &search, weights, cad, options, say, result, &aligned_scans,
                          &align));
-  const ScanSet& final_scans = align ? aligned_scans : scans;
+  const ScanSet& final_scans = align ? aligned_scans : work;
   CorrespondenceSearch final_search(&final_scans, weights);
   WeightedIcp final_icp(&final_scans, &final_search, &edges.normals, options.residuals);
   CellMask covered;

@@ -28,7 +28,7 @@ bool QualityOptions::IsValid(std::string* error) const {
 }
 
 bool FitOptions::IsValid(std::string* error) const {
-  return mixed_pixels.IsValid(error) && edges.IsValid(error) && stations.IsValid(error) &&
+  return mixed_pixels.IsValid(error) && crop.IsValid(error) && edges.IsValid(error) && stations.IsValid(error) &&
          residuals.IsValid(error) && samples.IsValid(error) && base.IsValid(error) &&
          chain.IsValid(error) && refinement.chain.IsValid(error) &&
          refinement.coverings.IsValid(error) && quality.IsValid(error);

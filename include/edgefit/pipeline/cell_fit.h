@@ -2,9 +2,19 @@
 // model in the order given, instance after instance, Fit() on the points
 // that are left, the instance's points removed before the next (the paper's
 // purpose: the fitted equipment replaced by movable models, the rest kept
-// as the background). A model's search stops at its count, or at the first
-// fit that is not ok: that fit's message says why no further instance was
-// taken, and a not-ok fit is never counted as an instance.
+// as the background).
+//
+// The scans' edges (Sec. 4) are detected once, before the first fit, with
+// the first model's edge options (and its mixed pixels removed first when
+// it asks so); every fit reads them (FitWithEdges), cropped to its
+// instance after its rough base poses (FitOptions::crop, turned on here).
+//
+// A fit is an instance when its base matches the scan and no body is a
+// mismatch (IsInstance): a part the stations did not see, or a joint the
+// scan leaves ambiguous, makes the instance's own quality not ok and says
+// which joint, but the machine is there. A model's search stops at its
+// count, or at the first fit that is not an instance, which is recorded
+// with its reason and never counted.
 #ifndef EDGEFIT_PIPELINE_CELL_FIT_H_
 #define EDGEFIT_PIPELINE_CELL_FIT_H_
 
@@ -47,8 +57,10 @@ struct CellInstance {
 struct CellModelOutcome {
   int found = 0;
   // Why the search of this model stopped: "" when its count was met, else
-  // the message of the fit that was not ok (or "at most N instances").
+  // the message of the fit that was not an instance (or "at most N instances").
   std::string stopped;
+  Pose T_world_base_rejected = Pose::Identity();  // that fit's base pose
+  bool rejected = false;
   bool count_met = true;  // false when a count was asked and not reached
 };
 
@@ -56,8 +68,14 @@ struct CellResult {
   std::vector<CellInstance> instances;  // in the order found
   std::vector<CellModelOutcome> models;
   size_t points = 0, background_points = 0;
-  double seconds = 0.0;
+  size_t mixed_pixels = 0;     // removed before the edges
+  double edge_seconds = 0.0;   // the one edge detection
+  double seconds = 0.0;        // in all
 };
+
+// Whether a fit is an instance of its model: the base body ok and no body a
+// mismatch.
+bool IsInstance(const FitResult& fit);
 
 // `scans` becomes the background: every found instance's points removed.
 // Fails (Status) where Fit() fails.

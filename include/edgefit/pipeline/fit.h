@@ -24,6 +24,7 @@
 #include <string>
 
 #include "edgefit/core/status.h"
+#include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/kinematic_model.h"
 #include "edgefit/pipeline/fit_options.h"
 #include "edgefit/pipeline/fit_result.h"
@@ -39,6 +40,15 @@ using ProgressFn = std::function<void(const std::string&)>;
 // returns Ok with result->ok = false and a message.
 Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& options,
            const ProgressFn& progress, FitResult* result);
+
+// Fit() after its first steps: the same pipeline on `scans` whose edges
+// (Sec. 4: normals and weights) were detected before, e.g. once for the
+// scans of a whole cell (cell_fit.h) from which instances were removed
+// since (their cells are missing now, so their normals are not read).
+// Mixed pixels are not removed here; timings.edges stays 0.
+Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
+                    const EdgeDetectionResult& edges, const FitOptions& options,
+                    const ProgressFn& progress, FitResult* result);
 
 }  // namespace edgefit
 

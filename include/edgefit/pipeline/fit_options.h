@@ -11,6 +11,7 @@
 
 #include "edgefit/core/pose.h"
 #include "edgefit/edges/edge_detector.h"
+#include "edgefit/pipeline/instance_crop.h"
 #include "edgefit/scan/mixed_pixels.h"
 #include "solvers/base/base_hypotheses.h"
 #include "solvers/base/base_rough.h"
@@ -105,6 +106,10 @@ struct FitOptions {
   // that, the KUKA's flipped wrist is still wrong (96.7 deg, said not ok).
   bool remove_mixed_pixels = false;
   MixedPixelOptions mixed_pixels;
+  // Extension: after the rough base poses, the scans cropped to the rays
+  // that pass within the model's reach of them (instance_crop.h); on in a
+  // cell, off for one asset.
+  InstanceCropOptions crop;
   // Sec. 4: edges and their weights (w_high lives here).
   EdgeDetectionOptions edges;
   // Extension: the stations aligned to each other before the fit, against
