@@ -17,6 +17,7 @@
 #include "common_flags.h"
 #include "edgefit/bench/fit_errors.h"
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/core/file_path.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/pipeline/asset_kind.h"
@@ -45,11 +46,6 @@ struct LoadedModel {
   int count = 0;
 };
 
-std::string Resolve(const std::string& folder, const std::string& path) {
-  if (path.empty() || path[0] == '/' || folder.empty()) return path;
-  return folder + "/" + path;
-}
-
 Status LoadModels(const std::string& path, std::vector<LoadedModel>* models) {
   std::string text;
   EDGEFIT_RETURN_IF_ERROR(ReadFileToString(path, &text));
@@ -58,8 +54,6 @@ Status LoadModels(const std::string& path, std::vector<LoadedModel>* models) {
       j["models"].empty()) {
     return Status::Error(path + ": expected {\"models\": [...]} with at least one model");
   }
-  const size_t slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash);
   std::vector<LoadedModel> loaded(j["models"].size());
   for (size_t m = 0; m < loaded.size(); ++m) {
     const json& e = j["models"][m];
@@ -69,10 +63,10 @@ Status LoadModels(const std::string& path, std::vector<LoadedModel>* models) {
     };
     l.name = text_of("name").empty() ? "model_" + std::to_string(m + 1) : text_of("name");
     const std::string where = path + ": model '" + l.name + "'";
-    l.urdf = Resolve(folder, text_of("urdf"));
+    l.urdf = PathRelativeToFile(path, text_of("urdf"));
     if (l.urdf.empty()) return Status::Error(where + ": no \"urdf\"");
     EDGEFIT_RETURN_IF_ERROR(ParseAttachSpecList(text_of("attach"), &l.specs).WithContext(where));
-    for (AttachSpec& spec : l.specs) spec.path = Resolve(folder, spec.path);
+    for (AttachSpec& spec : l.specs) spec.path = PathRelativeToFile(path, spec.path);
     EDGEFIT_RETURN_IF_ERROR(LoadModelWithAttachments(l.urdf, l.specs, ModelLoadOptions(), &l.model));
     EDGEFIT_RETURN_IF_ERROR(
         ChooseAssetKind(text_of("kind").empty() ? "auto" : text_of("kind"), l.model, &l.kind).WithContext(where));

@@ -48,6 +48,7 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
       say("cell: looking for " + label + " in " + std::to_string(scans->TotalValid()) + " points");
       FitOptions fit_options = cell_model.options;
       fit_options.crop.enabled = true;
+      fit_options.min_base_inlier_share = 0.5 * fit_options.quality.min_inlier_share;
       CellInstance instance;
       instance.model = static_cast<int>(m);
       instance.index = outcome.found + 1;
@@ -63,6 +64,8 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
       std::vector<std::vector<uint8_t>> marks;
       EDGEFIT_RETURN_IF_ERROR(MarkModelPoints(*scans, *cell_model.model, instance.fit.q,
                                               instance.fit.T_world_base, options.removal, &marks));
+      EDGEFIT_RETURN_IF_ERROR(MarkAttachedPoints(*scans, *cell_model.model, instance.fit.q,
+                                                 instance.fit.T_world_base, options.attached, &marks));
       instance.removed_points = RemoveMarkedPoints(marks, scans);
       say("cell: " + label + " found; " + std::to_string(instance.removed_points) + " points removed");
       result->instances.push_back(std::move(instance));

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <utility>
 
 #include "edgefit/correspondence/correspondence_search.h"
@@ -23,6 +24,7 @@ struct Attempt {
   std::vector<double> q;
   std::vector<JointRecord> records;
   double loss = 0.0;  // Eq. (9) of the whole model
+  bool base_mismatch = false;  // FitOptions::min_base_inlier_share: the chain was not fitted
 };
 
 // Options, a root link, and a model in metres.
@@ -148,6 +150,13 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
         icp->Fit(base_samples, LinkMotion::Free(), options.base.icp, &base_state, &attempt->base));
     attempt->T_world_base = base_state.T_world_link;
     result->timings.base_precise += Since(stage);
+    if (options.min_base_inlier_share > 0.0 &&
+        Quality(model, base, base_samples, attempt->base, options.quality).inlier_share <
+            options.min_base_inlier_share) {
+      attempt->base_mismatch = true;
+      attempt->loss = std::numeric_limits<double>::infinity();
+      return Status::Ok();
+    }
     stage = std::chrono::steady_clock::now();
     EDGEFIT_RETURN_IF_ERROR(
         chain->Fit(attempt->T_world_base, &attempt->q, &attempt->records, &attempt->loss));
@@ -172,6 +181,19 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
     }
   }
   result->timings.alternatives = Since(alternatives_start);
+  if (best.base_mismatch) {
+    const BodyQuality b = Quality(model, base, base_samples, best.base, options.quality);
+    result->T_world_base = best.T_world_base;
+    result->bodies.push_back(b);
+    char line[300];
+    std::snprintf(line, sizeof(line),
+                  "%s does not match the scan: %.0f%% of its visible samples are inliers of "
+                  "its precise ICP from every rough pose, RMS %.2f mm (the fit stops below "
+                  "%.0f%%)",
+                  b.link.c_str(), 100.0 * b.inlier_share, 1e3 * b.rms,
+                  100.0 * options.min_base_inlier_share);
+    return not_ok(line);
+  }
   result->T_world_base = best.T_world_base;
   result->bodies.push_back(Quality(model, base, base_samples, best.base, options.quality));
   Status resolved = model.ResolveDependentJoints(&best.q);

@@ -28,6 +28,10 @@ bool QualityOptions::IsValid(std::string* error) const {
 }
 
 bool FitOptions::IsValid(std::string* error) const {
+  if (!(min_base_inlier_share >= 0.0 && min_base_inlier_share <= 1.0)) {
+    if (error != nullptr) *error = "min_base_inlier_share must be in [0, 1]";
+    return false;
+  }
   return mixed_pixels.IsValid(error) && crop.IsValid(error) && edges.IsValid(error) && stations.IsValid(error) &&
          residuals.IsValid(error) && samples.IsValid(error) && base.IsValid(error) &&
          chain.IsValid(error) && refinement.chain.IsValid(error) &&

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/core/file_path.h"
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/scanner/random_joints.h"
@@ -13,23 +14,18 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::string Resolve(const std::string& folder, const std::string& path) {
-  if (path.empty() || path[0] == '/' || folder.empty()) return path;
-  return folder + "/" + path;
-}
-
 std::string StringField(const Json& a, const char* key) {
   return a.contains(key) && a[key].is_string() ? a[key].get<std::string>() : "";
 }
 
-Status LoadAsset(const Json& a, const std::string& folder, const std::string& where, uint64_t seed,
+Status LoadAsset(const Json& a, const std::string& file, const std::string& where, uint64_t seed,
                  CellSceneAsset* asset) {
   auto fail = [&where](const std::string& what) { return Status::Error(where + ": " + what); };
   if (!a.is_object()) return fail("not a JSON object");
-  asset->urdf = Resolve(folder, StringField(a, "urdf"));
+  asset->urdf = PathRelativeToFile(file, StringField(a, "urdf"));
   if (asset->urdf.empty()) return fail("no \"urdf\"");
   EDGEFIT_RETURN_IF_ERROR(ParseAttachSpecList(StringField(a, "attach"), &asset->attachments).WithContext(where));
-  for (AttachSpec& spec : asset->attachments) spec.path = Resolve(folder, spec.path);
+  for (AttachSpec& spec : asset->attachments) spec.path = PathRelativeToFile(file, spec.path);
   EDGEFIT_RETURN_IF_ERROR(
       LoadModelWithAttachments(asset->urdf, asset->attachments, ModelLoadOptions(), &asset->model));
   if (!a.contains("base") || !a["base"].is_array() || a["base"].size() != 3) {
@@ -55,7 +51,7 @@ Status LoadAsset(const Json& a, const std::string& folder, const std::string& wh
   } else if (!posture.empty()) {
     const size_t colon = posture.rfind(':');
     if (colon == std::string::npos) return fail("\"posture\": expected FILE.json:NAME");
-    EDGEFIT_RETURN_IF_ERROR(LoadNamedPosture(Resolve(folder, posture.substr(0, colon)), posture.substr(colon + 1),
+    EDGEFIT_RETURN_IF_ERROR(LoadNamedPosture(PathRelativeToFile(file, posture.substr(0, colon)), posture.substr(colon + 1),
                                              asset->model, &asset->q)
                                 .WithContext(where));
   }
@@ -73,8 +69,6 @@ Status LoadCellScene(const std::string& path, uint64_t seed, std::vector<CellSce
   if (!j.contains("assets") || !j["assets"].is_array() || j["assets"].empty()) {
     return Status::Error(path + ": no \"assets\" array");
   }
-  const size_t slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash);
   std::vector<CellSceneAsset> loaded(j["assets"].size());
   for (size_t a = 0; a < loaded.size(); ++a) {
     const Json& item = j["assets"][a];
@@ -84,7 +78,7 @@ Status LoadCellScene(const std::string& path, uint64_t seed, std::vector<CellSce
     for (size_t b = 0; b < a; ++b) {
       if (loaded[b].name == loaded[a].name) return Status::Error(where + ": the name is taken");
     }
-    EDGEFIT_RETURN_IF_ERROR(LoadAsset(item, folder, where, SplitMix64::StreamSeed(seed, 2000 + a), &loaded[a]));
+    EDGEFIT_RETURN_IF_ERROR(LoadAsset(item, path, where, SplitMix64::StreamSeed(seed, 2000 + a), &loaded[a]));
   }
   *assets = std::move(loaded);
   return Status::Ok();

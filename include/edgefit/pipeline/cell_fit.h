@@ -7,7 +7,9 @@
 // The scans' edges (Sec. 4) are detected once, before the first fit, with
 // the first model's edge options (and its mixed pixels removed first when
 // it asks so); every fit reads them (FitWithEdges), cropped to its
-// instance after its rough base poses (FitOptions::crop, turned on here).
+// instance after its rough base poses (FitOptions::crop, turned on here),
+// and stops after the base where the base clearly does not match
+// (FitOptions::min_base_inlier_share, half the quality's inlier share here).
 //
 // A fit is an instance when its base matches the scan and no body is a
 // mismatch (IsInstance): a part the stations did not see, or a joint the
@@ -23,6 +25,7 @@
 
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/pipeline/attached_points.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/pipeline/fit_options.h"
 #include "edgefit/pipeline/fit_result.h"
@@ -43,6 +46,8 @@ struct CellOptions {
   // Each instance's points (within this of its fitted surface) leave the
   // scans before the next fit; also the background's removal distance.
   ModelPointsOptions removal;
+  // And with them the points attached to them (dress packs, hoses, covers).
+  AttachedPointsOptions attached;
   // At most this many instances of one model with count 0.
   int max_instances = 16;
 };

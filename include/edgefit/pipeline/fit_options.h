@@ -110,6 +110,13 @@ struct FitOptions {
   // that pass within the model's reach of them (instance_crop.h); on in a
   // cell, off for one asset.
   InstanceCropOptions crop;
+  // Extension for cells: when the base, after its precise ICP from every
+  // rough pose, has fewer than this share of its visible samples within the
+  // quality's inlier distance, the fit stops there, not ok, without the
+  // chain (no machine of this model there). 0 = off (edgefit fit: the whole
+  // fit and every body's verdict); the cell fit sets half the quality's
+  // min_inlier_share.
+  double min_base_inlier_share = 0.0;
   // Sec. 4: edges and their weights (w_high lives here).
   EdgeDetectionOptions edges;
   // Extension: the stations aligned to each other before the fit, against
