@@ -1,0 +1,95 @@
+// edgefit scan --scene and edgefit cell through the command line: a small
+// cell of two balancer arms and an arm that is not looked for, written as
+// E57, both found and their points gone from the background; bad scene and
+// model files end with exit 2, one line naming the file, and no output.
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tools/cli_fixture.h"
+
+namespace edgefit_cli_test {
+namespace {
+
+const std::string kModels = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/";
+
+class CellCliTest : public CliTest {
+ protected:
+  std::string Scene() {
+    return Write("scene.json",
+                 "{\"assets\": [\n"
+                 " {\"name\": \"a\", \"urdf\": \"" + kModels + "balancer_arm.urdf\", "
+                 "\"joints\": \"joint_1=20deg,joint_2=-0.3\", \"base\": [-1.0, 0, 0]},\n"
+                 " {\"name\": \"b\", \"urdf\": \"" + kModels + "balancer_arm.urdf\", "
+                 "\"joints\": \"joint_1=-30deg,joint_2=0.2\", \"base\": [1.0, 0.3, 90]},\n"
+                 " {\"name\": \"other\", \"urdf\": \"" + kModels + "fk_arm.urdf\", \"base\": [0, 2.0, 0]}]}\n");
+  }
+  std::string Models(const std::string& count) {
+    return Write("models.json", "{\"models\": [{\"name\": \"arm\", \"urdf\": \"" + kModels +
+                                    "balancer_arm.urdf\", \"count\": " + count + "}]}\n");
+  }
+};
+
+TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "three whole fits: release suite only";
+#endif
+  const RunResult scan = Run("scan --scene=" + Scene() + " --scanners=3 --spacing_mm=6 --seed=3 --out=" +
+                             Path("cell.e57") + " --truth=" + Path("truth.json"));
+  ASSERT_EQ(scan.exit_code, 0) << scan.err;
+  const nlohmann::json truth = nlohmann::json::parse(Slurp(Path("truth.json")));
+  ASSERT_EQ(truth["assets"].size(), 3u);
+  EXPECT_EQ(truth["assets"][1]["name"], "b");
+  EXPECT_GT(truth["assets"][1]["counts"]["link"].get<size_t>(), 1000u);
+
+  const RunResult cell = Run("cell --models=" + Models("\"every\"") + " --scan=" + Path("cell.e57") +
+                             " --truth=" + Path("truth.json") + " --out=" + Path("r.json") +
+                             " --out_dir=" + Path("") + " --out_background=" + Path("rest.e57"));
+  ASSERT_EQ(cell.exit_code, 0) << cell.err;
+  const nlohmann::json r = nlohmann::json::parse(Slurp(Path("r.json")));
+  ASSERT_EQ(r["instances"].size(), 2u);
+  EXPECT_EQ(r["models"][0]["found"], 2);
+  EXPECT_NE(r["models"][0]["stopped"].get<std::string>(), "");  // why no third
+  EXPECT_TRUE(r["ok"].get<bool>());
+  EXPECT_EQ(r["truth_assets_not_found"], nlohmann::json::array({"other"}));
+  for (const auto& instance : r["instances"]) {
+    EXPECT_LT(instance["base_error_mm"].get<double>(), 1.0) << instance["id"];
+    const nlohmann::json result = nlohmann::json::parse(Slurp(instance["result"].get<std::string>()));
+    EXPECT_TRUE(result.contains("joint_status"));
+  }
+  const RunResult rest = Run("info --json --scan=" + Path("rest.e57"));
+  ASSERT_EQ(rest.exit_code, 0) << rest.err;
+  EXPECT_EQ(nlohmann::json::parse(rest.out)["total_valid"].get<size_t>(), r["background"]["points"].get<size_t>());
+  EXPECT_GT(r["background"]["removed_points"].get<size_t>(), 20000u);
+}
+
+TEST_F(CellCliTest, BadSceneAndModelFilesExitTwoWithoutOutput) {
+  const std::string scene_out = " --out=" + Path("c.e57") + " --truth=" + Path("t.json");
+  struct Case {
+    std::string args, file, expected;
+  };
+  const std::string no_base = Write("no_base.json", "{\"assets\": [{\"urdf\": \"" + kModels + "fk_arm.urdf\"}]}");
+  const std::string empty = Write("empty.json", "{\"assets\": []}");
+  const std::string not_json = Write("not_json.json", "assets: none");
+  const std::string count_zero = Models("0");
+  const std::string no_mesh = Write("no_mesh.json", "{\"models\": [{\"urdf\": \"nowhere.urdf\"}]}");
+  const Case cases[] = {
+      {"scan --scene=" + no_base + scene_out, no_base, "\"base\" must be [x, y, yaw_deg]"},
+      {"scan --scene=" + empty + scene_out, empty, "no \"assets\" array"},
+      {"scan --scene=" + not_json + scene_out, not_json, "not a JSON object"},
+      {"scan --scene=" + no_base + " --urdf=" + kModels + "fk_arm.urdf" + scene_out, "--scene", "drop --urdf"},
+      {"cell --models=" + count_zero + " --scan=x.e57 --out=" + Path("r.json"), count_zero, "\"count\" must be"},
+      {"cell --models=" + no_mesh + " --scan=x.e57 --out=" + Path("r.json"), "nowhere.urdf", "nowhere.urdf"},
+  };
+  for (const Case& c : cases) {
+    const RunResult r = Run(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(c.file), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+    for (const char* output : {"c.e57", "t.json", "r.json"}) EXPECT_FALSE(fs::exists(Path(output))) << output;
+  }
+}
+
+}  // namespace
+}  // namespace edgefit_cli_test
