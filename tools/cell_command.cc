@@ -173,7 +173,7 @@ int RunCell(const Command& command) {
       FitErrors errors;
       const Status status = CompareWithTruth(l.model, instance.fit.q, instance.fit.T_world_base, t.joints,
                                              t.T_world_base, SurveyFrame(t.T_world_scanners, t.sensor.T_world_scanners_written),
-                                             &errors);
+                                             &errors, instance.fit.base_symmetry);
       if (!status.ok()) return fail(status.WithContext(FLAGS_truth));
       MarkUnobservableJoints(instance.fit.bodies, &errors);
       double worst = 0.0;

@@ -115,7 +115,8 @@ int RunFit(const Command& command) {
   if (!FLAGS_truth.empty()) {
     const Status status = CompareWithTruth(
         model, fit.q, fit.T_world_base, truth.joints, truth.T_world_base,
-        SurveyFrame(truth.T_world_scanners, truth.sensor.T_world_scanners_written), &errors);
+        SurveyFrame(truth.T_world_scanners, truth.sensor.T_world_scanners_written), &errors,
+        fit.base_symmetry);
     if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
     MarkUnobservableJoints(fit.bodies, &errors);
   }

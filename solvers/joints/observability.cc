@@ -93,4 +93,45 @@ double NearestZeroTurn(const Joint& j, double q_j) {
   return best;
 }
 
+BaseSymmetry FindBaseSymmetry(const KinematicModel& model,
+                              const std::vector<SurfaceSamples>& link_samples, double spacing,
+                              const ObservabilityOptions& options) {
+  BaseSymmetry symmetry;
+  const int root = model.root_link();
+  for (size_t j = 0; j < model.joints().size() && symmetry.joint < 0; ++j) {
+    const Joint& joint = model.joints()[j];
+    if (joint.parent_link == root && joint.IsIndependent() && joint.type != JointType::kPrismatic) {
+      symmetry.joint = static_cast<int>(j);
+    }
+  }
+  if (symmetry.joint < 0) return BaseSymmetry();
+  SurfaceSamples centred;
+  AppendBodySamples(MakeBody(model, root, -1), link_samples, Pose::Identity(), &centred);
+  if (centred.points.empty()) return BaseSymmetry();
+  const size_t all = centred.points.size();
+  ThinSamples(options.max_samples, &centred);
+  spacing *= std::sqrt(static_cast<double>(all) / static_cast<double>(centred.points.size()));
+  const Joint& joint = model.joints()[static_cast<size_t>(symmetry.joint)];
+  // The samples with the joint's axis through the origin.
+  const Eigen::Vector3f origin = joint.T_parent_joint.translation().cast<float>();
+  for (Eigen::Vector3f& p : centred.points) p -= origin;
+  const Eigen::Vector3d axis = joint.T_parent_joint.linear() * joint.axis;
+  for (int degrees = 30; degrees < 360; degrees += 15) {
+    if (degrees % 30 != 0 && degrees % 45 != 0) continue;
+    const double turn = degrees * M_PI / 180.0;
+    if (TurnedOffShare(centred, axis, turn, spacing, options) <= options.max_off_share) {
+      symmetry.turns.push_back(turn);
+    }
+  }
+  if (symmetry.turns.empty()) symmetry.joint = -1;
+  return symmetry;
+}
+
+Pose TurnBaseForJoint(const KinematicModel& model, int joint, const Pose& T_world_base,
+                      double q_old, double q_new) {
+  const Joint& j = model.joints()[static_cast<size_t>(joint)];
+  return T_world_base * j.T_parent_joint * Pose(Eigen::AngleAxisd(q_old - q_new, j.axis)) *
+         j.T_parent_joint.inverse();
+}
+
 }  // namespace edgefit

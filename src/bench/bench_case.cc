@@ -147,7 +147,8 @@ Status FitBenchCase(const KinematicModel& model, const BenchCase& bench_case, co
   result->message = fit.message;
   EDGEFIT_RETURN_IF_ERROR(
       CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, bench_case.q),
-                       bench_case.T_world_base, T_survey_world, &result->errors));
+                       bench_case.T_world_base, T_survey_world, &result->errors,
+                       fit.base_symmetry));
   MarkUnobservableJoints(fit.bodies, &result->errors);
   for (const JointError& e : result->errors.joints) {
     if (e.independent && !e.unobservable &&

@@ -49,16 +49,34 @@ Pose SurveyFrame(const std::vector<Pose>& T_world_scanners_true,
 Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& q_fit,
                         const Pose& T_world_base_fit,
                         const std::vector<std::pair<std::string, double>>& truth_joints,
-                        const Pose& T_world_base_truth, const Pose& T_survey_world,
-                        FitErrors* errors) {
+                        const Pose& T_world_base_truth_given, const Pose& T_survey_world,
+                        FitErrors* errors, const BaseSymmetry& symmetry) {
   *errors = FitErrors();
+  std::vector<std::pair<std::string, double>> truth_named = truth_joints;
+  Pose T_world_base_truth = T_world_base_truth_given;
+  if (symmetry.joint >= 0) {  // the truth's placement nearest the fit's
+    const Joint& j1 = model.joints()[static_cast<size_t>(symmetry.joint)];
+    for (auto& [name, value] : truth_named) {
+      if (name != j1.name) continue;
+      const double fit = q_fit[static_cast<size_t>(symmetry.joint)];
+      double best = value;
+      for (const double t : symmetry.turns) {
+        if (std::abs(std::remainder(fit - (value - t), 2.0 * M_PI)) <
+            std::abs(std::remainder(fit - best, 2.0 * M_PI))) {
+          best = value - t;
+        }
+      }
+      T_world_base_truth = TurnBaseForJoint(model, symmetry.joint, T_world_base_truth, value, best);
+      value = best;
+    }
+  }
   std::vector<double> q_truth(model.joints().size(), 0.0);
   for (size_t j = 0; j < model.joints().size(); ++j) {
     const Joint& joint = model.joints()[j];
     if (!joint.IsMoving()) continue;
-    const auto it = std::find_if(truth_joints.begin(), truth_joints.end(),
+    const auto it = std::find_if(truth_named.begin(), truth_named.end(),
                                  [&joint](const auto& named) { return named.first == joint.name; });
-    if (it == truth_joints.end()) {
+    if (it == truth_named.end()) {
       return Status::Error("the truth has no value for joint '" + joint.name + "'");
     }
     JointError e;

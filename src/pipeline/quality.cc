@@ -95,9 +95,31 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
                     const std::vector<JointRecord>& records, const Status& resolved,
                     const FitOptions& options, FitResult* result) {
   // The reporting conventions first (each places every link as the fitted
-  // value does): a joint no scan can pin at its zero (or the limit nearest
-  // it), a joint with a range beyond a full turn at its whole turn nearest
-  // zero.
+  // value does): a base that looks the same turned (observability.h) turned
+  // so that its joint reads the value nearest zero, a joint no scan can pin
+  // at its zero (or the limit nearest it), a joint with a range beyond a
+  // full turn at its whole turn nearest zero.
+  result->base_symmetry = FindBaseSymmetry(model, cad.icp, options.samples.icp_spacing,
+                                           options.quality.observability);
+  if (result->base_symmetry.joint >= 0) {
+    const size_t j1 = static_cast<size_t>(result->base_symmetry.joint);
+    const Joint& joint = model.joints()[j1];
+    const double q1 = result->q[j1];
+    double best = q1;
+    std::vector<double> turns = result->base_symmetry.turns;
+    turns.push_back(0.0);
+    for (const double t : turns) {
+      for (int k = -2; k <= 2; ++k) {
+        const double v = q1 - t + 2.0 * M_PI * k;
+        const bool within = joint.type == JointType::kContinuous
+                                ? std::abs(v) <= M_PI
+                                : v >= joint.lower - 1e-9 && v <= joint.upper + 1e-9;
+        if (within && std::abs(v) < std::abs(best) - 1e-9) best = v;
+      }
+    }
+    result->T_world_base = TurnBaseForJoint(model, static_cast<int>(j1), result->T_world_base, q1, best);
+    result->q[j1] = best;
+  }
   std::vector<bool> unobservable(model.joints().size(), false);
   std::vector<double> off_share(model.joints().size(), std::nan(""));
   for (const JointRecord& record : records) {

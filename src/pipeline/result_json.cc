@@ -100,6 +100,21 @@ json JointStatusJson(const KinematicModel& model, const FitResult& fit, const js
       v["convention"] = "of the values a whole turn apart within " + b.joint +
                         "'s limits (the same geometry), the one nearest zero is reported";
     }
+    const BaseSymmetry& symmetry = fit.base_symmetry;
+    if (symmetry.joint >= 0 && model.joints()[static_cast<size_t>(symmetry.joint)].name == b.joint) {
+      const double q = fit.q[static_cast<size_t>(symmetry.joint)];
+      std::string turns;
+      for (const double t : symmetry.turns) {
+        const int degrees = static_cast<int>(std::lround(t * 180.0 / M_PI));
+        turns += (turns.empty() ? "" : ", ") + std::to_string(degrees);
+        alternatives.push_back({{"value", std::remainder(q + t, 2.0 * M_PI)},
+                                {"loss_margin_m", 0.0},
+                                {"base_turn_deg", -degrees}});
+      }
+      v["convention"] = "the base looks the same turned by " + turns + " deg about " + b.joint +
+                        "'s axis, so no scan tells the base's yaw from " + b.joint +
+                        ": of those placements the one with " + b.joint + " nearest zero is reported";
+    }
     v["std"] = joint_std.contains(b.joint) ? joint_std[b.joint] : json(nullptr);
     v["alternatives"] = alternatives;
     verdicts[b.joint] = v;

@@ -136,7 +136,7 @@ TEST(NegativeFitTest, HalfOutOfTheWindowIsNotOkOrRight) {
   const FitResult fit = FitTheModel(half);
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, s.q),
-                               s.T_world_base, Pose::Identity(), &errors)
+                               s.T_world_base, Pose::Identity(), &errors, fit.base_symmetry)
                   .ok());
   bool off = errors.base_translation > 0.005;
   for (const JointError& e : errors.joints) off = off || e.error > (e.prismatic ? 0.005 : 0.5 * kDeg);

@@ -60,7 +60,8 @@ RealisticScene* MakeScene(const std::string& sensor, bool fit) {
       T_survey_scanners.push_back(scan.T_world_scanner());
     CHECK(CompareWithTruth(out->model, out->fit.q, out->fit.T_world_base,
                            NamedJointValues(out->model, out->q), out->T_world_base,
-                           SurveyFrame(out->T_world_scanners, T_survey_scanners), &out->errors)
+                           SurveyFrame(out->T_world_scanners, T_survey_scanners), &out->errors,
+                           out->fit.base_symmetry)
               .ok());
     return out;
   }

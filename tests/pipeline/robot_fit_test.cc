@@ -39,7 +39,7 @@ FitErrors FitScene(const ScanSet& scans, FitResult* fit) {
   EXPECT_TRUE(status.ok()) << status.message();
   FitErrors errors;
   CHECK(CompareWithTruth(s.model, fit->q, fit->T_world_base, NamedJointValues(s.model, s.q),
-                         s.T_world_base, Pose::Identity(), &errors)
+                         s.T_world_base, Pose::Identity(), &errors, fit->base_symmetry)
             .ok());
   return errors;
 }
@@ -157,7 +157,8 @@ TEST(RobotFitTest, BaseHintTakesTheHeightFromTheFloor) {
   ASSERT_TRUE(Fit(s.model, lowered, options, nullptr, &fit).ok());
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(s.model, fit.q, fit.T_world_base, NamedJointValues(s.model, s.q),
-                               T_shift * s.T_world_base, Pose::Identity(), &errors)
+                               T_shift * s.T_world_base, Pose::Identity(), &errors,
+                               fit.base_symmetry)
                   .ok());
   EXPECT_TRUE(fit.ok) << fit.message;
   EXPECT_LT(errors.base_translation, 0.0001);
@@ -219,7 +220,7 @@ TEST(RobotFitTest, BareFlangeIsUnobservableAndTheFitOk) {
   EXPECT_TRUE(fit.ok) << fit.message;
   FitErrors errors;
   ASSERT_TRUE(CompareWithTruth(model, fit.q, fit.T_world_base, NamedJointValues(model, q),
-                               T_world_base, Pose::Identity(), &errors)
+                               T_world_base, Pose::Identity(), &errors, fit.base_symmetry)
                   .ok());
   for (const BodyQuality& b : fit.bodies) {
     if (b.joint.empty()) continue;

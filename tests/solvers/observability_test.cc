@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,43 @@ TEST(ObservabilityTest, BareFlangeOfTheBundledRobotIsUnobservable) {
                   gun ? "with the gun" : "bare", joint.name.c_str(), off);
       EXPECT_EQ(unobservable, !gun && joint.name == "joint_6") << joint.name;
     }
+  }
+}
+
+// The bundled robot's square base looks the same every quarter turn about
+// joint_1, the balancer arm's too; the KUKA's (../shared) at no turn. The
+// base turned for another joint_1 value leaves link_1 where it was.
+TEST(ObservabilityTest, BaseSymmetryOfSquareBasesAndNotOfTheKuka) {
+  const std::string source = std::string(EDGEFIT_SOURCE_DIR) + "/assets/";
+  const std::string kuka = std::string(EDGEFIT_SHARED_DIR) + "/robots/kuka_kr150r3100_2/kuka_kr150r3100_2.urdf";
+  for (const std::string& urdf : {source + "robot/robot.urdf", source + "models/balancer_arm.urdf", kuka}) {
+    if (urdf == kuka && !std::ifstream(kuka).good()) continue;
+    KinematicModel model;
+    ASSERT_TRUE(LoadModelWithAttachments(urdf, {}, ModelLoadOptions(), &model).ok()) << urdf;
+    SamplingOptions sampling;
+    sampling.spacing = kSpacing;
+    const BaseSymmetry symmetry =
+        FindBaseSymmetry(model, SampleModelSurfaces(model, sampling), kSpacing, ObservabilityOptions());
+    if (urdf == kuka) {
+      EXPECT_EQ(symmetry.joint, -1);
+      EXPECT_TRUE(symmetry.turns.empty());
+      continue;
+    }
+    ASSERT_EQ(symmetry.joint, model.JointIndex("joint_1")) << urdf;
+    ASSERT_EQ(symmetry.turns.size(), 3u) << urdf;
+    for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(symmetry.turns[k], (k + 1) * M_PI / 2, 1e-12);
+    std::vector<double> q = model.ZeroJoints();
+    q[static_cast<size_t>(symmetry.joint)] = 0.3;
+    ASSERT_TRUE(model.ResolveDependentJoints(&q).ok());
+    const Pose T = PoseFromXyYaw(1.0, 2.0, 0.4);
+    std::vector<double> q_turned = q;
+    q_turned[static_cast<size_t>(symmetry.joint)] = 0.3 - M_PI / 2;
+    ASSERT_TRUE(model.ResolveDependentJoints(&q_turned).ok());
+    const Pose T_turned = TurnBaseForJoint(model, symmetry.joint, T, 0.3, 0.3 - M_PI / 2);
+    const int link_1 = model.joints()[static_cast<size_t>(symmetry.joint)].child_link;
+    EXPECT_TRUE(model.ForwardKinematics(q, T)[static_cast<size_t>(link_1)].matrix().isApprox(
+        model.ForwardKinematics(q_turned, T_turned)[static_cast<size_t>(link_1)].matrix(), 1e-12));
+    EXPECT_NEAR(std::abs(std::remainder(RpyFromRotation(T_turned.linear()).z() - 0.4, 2 * M_PI)), M_PI / 2, 1e-9);
   }
 }
 

@@ -54,6 +54,9 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
   EXPECT_EQ(r["truth_assets_not_found"], nlohmann::json::array({"other"}));
   for (const auto& instance : r["instances"]) {
     EXPECT_LT(instance["base_error_mm"].get<double>(), 1.0) << instance["id"];
+    // The arms' square bases: joint_1 nearest zero of the quarter turns,
+    // which the truth's 20 and -30 deg are.
+    EXPECT_LT(instance["worst_revolute_error_deg"].get<double>(), 0.05) << instance["id"];
     const nlohmann::json result = nlohmann::json::parse(Slurp(instance["result"].get<std::string>()));
     EXPECT_TRUE(result.contains("joint_status"));
   }

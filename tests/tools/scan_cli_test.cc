@@ -131,9 +131,9 @@ TEST_F(ScanCliTest, ExplicitScannerPositions) {
 
 TEST_F(ScanCliTest, BadInputLeavesNoOutput) {
   const std::string out = Path("x.ptx"), truth = Path("x.json");
-  ExpectBadInput("scan --out=" + out + " --truth=" + truth, "--urdf is required");
+  ExpectBadInput("scan --out=" + out + " --truth=" + truth, "--urdf (or --scene) is required");
   ExpectBadInput("scan --urdf=" + kModel + " --out=" + Path("x.xyz") + " --truth=" + truth,
-                 ".ptx or .pcd");
+                 ".ptx, .e57 or .pcd");
   ExpectBadInput(SmallScanArgs(out, truth) + " --base=1,2", "--base");
   ExpectBadInput("scan --urdf=" + kModel + " --joints=joint_7=0.1 --out=" + out +
                      " --truth=" + truth,

@@ -64,12 +64,14 @@ Pose SurveyFrame(const std::vector<Pose>& T_world_scanners_true,
 
 // truth_joints: name -> value of every non-fixed joint (Truth::joints).
 // T_survey_world: SurveyFrame of the scan's stations (base_*_survey).
-// Fails when a joint of the model is missing from the truth.
+// symmetry: the fit's FitResult::base_symmetry; the truth is compared in
+// the placement among those it allows whose joint is nearest the fit's
+// (the same geometry). Fails when a joint of the model is missing from the truth.
 Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& q_fit,
                         const Pose& T_world_base_fit,
                         const std::vector<std::pair<std::string, double>>& truth_joints,
                         const Pose& T_world_base_truth, const Pose& T_survey_world,
-                        FitErrors* errors);
+                        FitErrors* errors, const BaseSymmetry& symmetry = BaseSymmetry());
 
 // Sets JointError::unobservable from the fit's verdicts (FitResult::bodies).
 void MarkUnobservableJoints(const std::vector<BodyQuality>& bodies, FitErrors* errors);

@@ -12,6 +12,7 @@
 #include "edgefit/pipeline/fit_options.h"
 #include "solvers/base/base_rough.h"
 #include "solvers/base/conveyance_base_rough.h"
+#include "solvers/joints/observability.h"
 #include "solvers/refinement/chain_refinement.h"
 
 namespace edgefit {
@@ -90,6 +91,9 @@ struct FitResult {
   CoveringSummary coverings;
   // Cells removed as mixed pixels before Sec. 4 (FitOptions::remove_mixed_pixels).
   size_t mixed_pixels = 0;
+  // The base's symmetry (observability.h): its joint is reported at the
+  // placement nearest zero; the others are the same geometry.
+  BaseSymmetry base_symmetry;
   FitTimings timings;
   bool ok = false;
   std::string message;  // why not ok
