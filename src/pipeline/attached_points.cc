@@ -6,7 +6,7 @@
 #include <string>
 
 #include "edgefit/core/point_kdtree.h"
-#include "edgefit/model/surface_sampler.h"
+#include "edgefit/pipeline/model_points.h"
 
 namespace edgefit {
 
@@ -25,17 +25,8 @@ Status MarkAttachedPoints(const ScanSet& scans, const KinematicModel& model,
   if (!options.IsValid(&error)) return Status::Error(error);
   if (q.size() != model.joints().size()) return Status::Error("attached points: wrong joint count");
   if (marks->size() != scans.scans.size()) return Status::Error("attached points: marks of other scans");
-  SamplingOptions sampling;
-  sampling.spacing = options.sample_spacing;
-  sampling.seed = options.seed;
-  const std::vector<SurfaceSamples> samples = SampleModelSurfaces(model, sampling);
-  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
-  std::vector<Eigen::Vector3f> surface;
-  for (size_t l = 0; l < samples.size(); ++l) {
-    for (const Eigen::Vector3f& p : samples[l].points) {
-      surface.push_back((T_world_link[l] * p.cast<double>()).cast<float>());
-    }
-  }
+  const std::vector<Eigen::Vector3f> surface =
+      WorldSurfaceSamples(model, q, T_world_base, options.sample_spacing, options.seed);
   if (surface.empty()) return Status::Ok();
   PointVectorAdaptor adaptor{&surface};
   PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));

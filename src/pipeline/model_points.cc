@@ -10,6 +10,24 @@
 
 namespace edgefit {
 
+std::vector<Eigen::Vector3f> WorldSurfaceSamples(const KinematicModel& model,
+                                                 const std::vector<double>& q,
+                                                 const Pose& T_world_base, double spacing,
+                                                 uint64_t seed) {
+  SamplingOptions sampling;
+  sampling.spacing = spacing;
+  sampling.seed = seed;
+  const std::vector<SurfaceSamples> samples = SampleModelSurfaces(model, sampling);
+  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
+  std::vector<Eigen::Vector3f> world;
+  for (size_t l = 0; l < samples.size(); ++l) {
+    for (const Eigen::Vector3f& p : samples[l].points) {
+      world.push_back((T_world_link[l] * p.cast<double>()).cast<float>());
+    }
+  }
+  return world;
+}
+
 Status MarkModelPoints(const ScanSet& scans, const KinematicModel& model,
                        const std::vector<double>& q, const Pose& T_world_base,
                        const ModelPointsOptions& options,
@@ -19,17 +37,8 @@ Status MarkModelPoints(const ScanSet& scans, const KinematicModel& model,
   if (!(options.distance > 0.0) || !(options.sample_spacing > 0.0)) {
     return Status::Error("model points: distance and sample_spacing must be > 0");
   }
-  SamplingOptions sampling;
-  sampling.spacing = options.sample_spacing;
-  sampling.seed = options.seed;
-  const std::vector<SurfaceSamples> samples = SampleModelSurfaces(model, sampling);
-  const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
-  std::vector<Eigen::Vector3d> p_world;
-  for (size_t l = 0; l < samples.size(); ++l) {
-    for (const Eigen::Vector3f& p : samples[l].points) {
-      p_world.push_back(T_world_link[l] * p.cast<double>());
-    }
-  }
+  const std::vector<Eigen::Vector3f> p_world =
+      WorldSurfaceSamples(model, q, T_world_base, options.sample_spacing, options.seed);
 
   on_model->assign(scans.scans.size(), {});
   const float max_d2 = static_cast<float>(options.distance * options.distance);
@@ -50,7 +59,7 @@ Status MarkModelPoints(const ScanSet& scans, const KinematicModel& model,
     // depend on the schedule.
 #pragma omp parallel for schedule(dynamic, 1024)
     for (int64_t i = 0; i < n; ++i) {
-      const Eigen::Vector3d p = T_scanner_world * p_world[static_cast<size_t>(i)];
+      const Eigen::Vector3d p = T_scanner_world * p_world[static_cast<size_t>(i)].cast<double>();
       int row, col;
       if (!lattice.ProjectToCell(p, &row, &col)) continue;
       // Cells whose rays pass within `distance` of p: the window's angular

@@ -23,7 +23,6 @@ using testing::MakeSyntheticScan;
 using testing::SyntheticScanOptions;
 using testing::TempPath;
 
-constexpr double kDeg = M_PI / 180.0;
 
 const std::string kE57Dir = std::string(EDGEFIT_SHARED_DIR) + "/data/scans/e57/";
 
@@ -32,26 +31,11 @@ bool HaveSharedScans() { return std::ifstream(kE57Dir + "bunnyDouble.e57").good(
 #define SKIP_WITHOUT_SHARED_SCANS() \
   if (!HaveSharedScans()) GTEST_SKIP() << "no " << kE57Dir << " (../shared absent)"
 
-SyntheticScanOptions SmallScan(uint32_t seed, bool color) {
-  SyntheticScanOptions o;
-  o.rows = 36;
-  o.cols = 64;
-  o.elevation_first = -45 * kDeg;
-  o.elevation_step = 1.5 * kDeg;
-  o.azimuth_first = -80 * kDeg;
-  o.azimuth_step = 1.2 * kDeg;
-  o.range_noise_m = 0.001;
-  o.missing_fraction = 0.1;
-  o.color = color;
-  o.seed = seed;
-  o.T_world_scanner = PoseFromXyzRpy(Eigen::Vector3d(0.5, -3.0, 1.3), Eigen::Vector3d(0.01, -0.02, 1.2));
-  return o;
-}
 
 ScanSet TwoScans() {
   ScanSet set;
-  set.scans.push_back(MakeSyntheticScan(testing::DefaultScene(), SmallScan(1, true)));
-  SyntheticScanOptions second = SmallScan(2, false);
+  set.scans.push_back(MakeSyntheticScan(testing::DefaultScene(), testing::SmallScanOptions(1, true)));
+  SyntheticScanOptions second = testing::SmallScanOptions(2);
   second.T_world_scanner = PoseFromXyzRpy(Eigen::Vector3d(-2.0, 1.0, 1.5), Eigen::Vector3d(0, 0, -2.5));
   set.scans.push_back(MakeSyntheticScan(testing::DefaultScene(), second));
   set.sources = {"a", "b"};

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "edgefit/scan/organized_scan.h"
+#include "scan/synthetic_scan.h"
 
 namespace edgefit {
 namespace testing {
@@ -16,6 +17,25 @@ namespace testing {
 // A fresh path under the gtest temp dir; unique per process and name.
 inline std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "edgefit_io_" + std::to_string(::getpid()) + "_" + name;
+}
+
+// A small organized scan of the reader tests: 36 x 64 cells, 1 mm noise, 10%
+// missing, a tilted scanner pose.
+inline SyntheticScanOptions SmallScanOptions(uint32_t seed, bool color = false) {
+  constexpr double kDeg = M_PI / 180.0;
+  SyntheticScanOptions o;
+  o.rows = 36;
+  o.cols = 64;
+  o.elevation_first = -45 * kDeg;
+  o.elevation_step = 1.5 * kDeg;
+  o.azimuth_first = -80 * kDeg;
+  o.azimuth_step = 1.2 * kDeg;
+  o.range_noise_m = 0.001;
+  o.missing_fraction = 0.1;
+  o.color = color;
+  o.seed = seed;
+  o.T_world_scanner = PoseFromXyzRpy(Eigen::Vector3d(0.5, -3.0, 1.3), Eigen::Vector3d(0.01, -0.02, 1.2));
+  return o;
 }
 
 // Cell-by-cell identity: validity, points, intensities and colours exactly;

@@ -22,25 +22,11 @@ using testing::TempPath;
 
 constexpr double kDeg = M_PI / 180.0;
 
-SyntheticScanOptions SmallScan(uint32_t seed) {
-  SyntheticScanOptions o;
-  o.rows = 36;
-  o.cols = 64;
-  o.elevation_first = -45 * kDeg;
-  o.elevation_step = 1.5 * kDeg;
-  o.azimuth_first = -80 * kDeg;
-  o.azimuth_step = 1.2 * kDeg;
-  o.range_noise_m = 0.001;
-  o.missing_fraction = 0.1;
-  o.seed = seed;
-  o.T_world_scanner = PoseFromXyzRpy(Eigen::Vector3d(0.5, -3.0, 1.3), Eigen::Vector3d(0.01, -0.02, 1.2));
-  return o;
-}
 
 TEST(PtxTest, RoundTripTwoScansWithColour) {
   ScanSet original;
   for (uint32_t seed : {1u, 2u}) {
-    SyntheticScanOptions o = SmallScan(seed);
+    SyntheticScanOptions o = testing::SmallScanOptions(seed);
     o.color = true;
     if (seed == 2) {
       o.R_scanner_lattice = Eigen::AngleAxisd(2 * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
@@ -146,7 +132,7 @@ class PtxLayoutTest : public ::testing::TestWithParam<LayoutCase> {};
 
 TEST_P(PtxLayoutTest, DetectsLayoutFromData) {
   for (bool reversed : {false, true}) {  // also: azimuth decreasing, rows top-down
-    SyntheticScanOptions o = SmallScan(5);
+    SyntheticScanOptions o = testing::SmallScanOptions(5);
     if (reversed) {
       o.azimuth_first = -o.azimuth_first;
       o.azimuth_step = -o.azimuth_step;
@@ -185,7 +171,7 @@ INSTANTIATE_TEST_SUITE_P(FourLayouts, PtxLayoutTest,
 
 TEST(PtxTest, LoadedScanFitsMemoryBudget) {
   for (bool color : {false, true}) {
-    SyntheticScanOptions o = SmallScan(3);
+    SyntheticScanOptions o = testing::SmallScanOptions(3);
     o.color = color;
     ScanSet set;
     set.scans.push_back(MakeSyntheticScan(testing::RoomScene(), o));

@@ -30,6 +30,12 @@ struct ModelPointsOptions {
   uint64_t seed = 1;
 };
 
+// The model's surface samples at (q, T_world_base), world frame.
+std::vector<Eigen::Vector3f> WorldSurfaceSamples(const KinematicModel& model,
+                                                 const std::vector<double>& q,
+                                                 const Pose& T_world_base, double spacing,
+                                                 uint64_t seed);
+
 // on_model[s][cell] = 1 for the points of the model at (q, T_world_base).
 // Fails on q of the wrong size or bad options.
 Status MarkModelPoints(const ScanSet& scans, const KinematicModel& model,
