@@ -26,6 +26,7 @@
 #include "edgefit/model/mesh_ply.h"
 #include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit.h"
+#include "edgefit/pipeline/instance_crop.h"
 #include "edgefit/pipeline/model_points.h"
 #include "edgefit/pipeline/result_json.h"
 #include "edgefit/scanner/truth.h"
@@ -87,6 +88,9 @@ int RunFit(const Command& command) {
     return BadInput(command, "--background_distance_mm must be > 0");
   }
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());  // before any file is read
+  Eigen::AlignedBox3d roi;
+  bool has_roi = false;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, RoiFromFlags(&roi, &has_roi));
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   const auto start = std::chrono::steady_clock::now();
 
@@ -109,8 +113,18 @@ int RunFit(const Command& command) {
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  ScanSet in_roi;
+  if (has_roi) {
+    in_roi = CropToBox(scans, roi);
+    if (in_roi.TotalValid() == 0) {
+      return BadInput(command, Status::Error("--roi: the box holds none of the " +
+                                             std::to_string(scans.TotalValid()) + " scan points"));
+    }
+    Progress("roi: " + std::to_string(in_roi.TotalValid()) + " of " + std::to_string(scans.TotalValid()) +
+             " points in the box");
+  }
   FitResult fit;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, Fit(model, scans, options, &Progress, &fit));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, Fit(model, has_roi ? in_roi : scans, options, &Progress, &fit));
   FitErrors errors;
   if (!FLAGS_truth.empty()) {
     const Status status = CompareWithTruth(
@@ -256,7 +270,7 @@ Command FitCommand() {
       "              [--kind=auto|articulated|conveyance]\n"
       "              [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]\n"
       "              [--parameterization=joint_space|pose_penalty] [--norefine_chain]\n"
-      "              [--init=x,y,yaw_deg]\n"
+      "              [--init=x,y,yaw_deg] [--roi=xmin,ymin,zmin,xmax,ymax,zmax]\n"
       "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
       "              [--out_ply=M.ply] [--out_background=B.ptx] [--background_distance_mm=8]\n"
       "              [--threads=N] [--seed=N]\n"
@@ -285,6 +299,7 @@ Command FitCommand() {
        "mixed_pixel_lines",
        "mixed_pixel_neighbour_lines",
        "init",
+       "roi",
        "truth",
        "out_joint_states",
        "out_urdf",

@@ -1,5 +1,10 @@
 #include "fit_flags.h"
 
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 #include "command_line.h"
 #include "common_flags.h"
 
@@ -45,6 +50,9 @@ DEFINE_int32(mixed_pixel_lines, 3,
 DEFINE_int32(mixed_pixel_neighbour_lines, 1,
              "... or along this many (0-4; 0: none) beside such a cell: the rest of a band of "
              "mixed pixels across an edge.");
+DEFINE_string(roi, "",
+              "Optional region of interest xmin,ymin,zmin,xmax,ymax,zmax in the world frame [m]: "
+              "points outside it are left out of the fit (the outputs keep the whole scan).");
 DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
@@ -90,6 +98,25 @@ Status CheckFitFlags() {
   }
   FitOptions options;
   return FitOptionsFromFlags(AssetKind::kArticulated, &options);
+}
+
+Status RoiFromFlags(Eigen::AlignedBox3d* box, bool* given) {
+  *given = !FLAGS_roi.empty();
+  if (!*given) return Status::Ok();
+  const std::vector<std::string> parts = SplitList(FLAGS_roi);
+  double v[6];
+  bool numbers = parts.size() == 6;
+  for (size_t k = 0; numbers && k < 6; ++k) {
+    char* rest = nullptr;
+    v[k] = std::strtod(parts[k].c_str(), &rest);
+    numbers = *rest == '\0' && !parts[k].empty() && std::isfinite(v[k]);
+  }
+  if (!numbers || !(v[0] < v[3] && v[1] < v[4] && v[2] < v[5])) {
+    return Status::Error("--roi: expected xmin,ymin,zmin,xmax,ymax,zmax in metres with min < max, got '" +
+                         FLAGS_roi + "'");
+  }
+  *box = Eigen::AlignedBox3d(Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Vector3d(v[3], v[4], v[5]));
+  return Status::Ok();
 }
 
 }  // namespace edgefit::tools

@@ -6,6 +6,8 @@
 
 #include <gflags/gflags.h>
 
+#include <Eigen/Geometry>
+
 #include "edgefit/core/status.h"
 #include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit_options.h"
@@ -36,6 +38,9 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options);
 
 // Whether the fit flags are valid, before any file is read (--kind too).
 Status CheckFitFlags();
+
+// --roi as a world box; *given false when the flag is empty.
+Status RoiFromFlags(Eigen::AlignedBox3d* box, bool* given);
 
 }  // namespace edgefit::tools
 

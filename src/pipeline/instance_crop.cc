@@ -71,4 +71,17 @@ ScanSet CropToRays(const ScanSet& scans, const std::vector<Eigen::Vector3d>& cen
   return cropped;
 }
 
+ScanSet CropToBox(const ScanSet& scans, const Eigen::AlignedBox3d& box_world) {
+  ScanSet cropped = scans;
+  for (OrganizedScan& scan : cropped.scans) {
+    const int64_t n = static_cast<int64_t>(scan.size());
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < n; ++i) {
+      const size_t cell = static_cast<size_t>(i);
+      if (scan.IsValid(cell) && !box_world.contains(scan.PointWorld(cell))) scan.SetMissing(cell);
+    }
+  }
+  return cropped;
+}
+
 }  // namespace edgefit

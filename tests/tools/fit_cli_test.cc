@@ -130,6 +130,9 @@ TEST_F(CliTest, FitBadInput) {
   ExpectBadInput("fit --urdf=" + kModel + out, "--scan is required");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample, "--out is required");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + Path("none.ptx") + out, "none.ptx");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --roi=1,2,3", "--roi: expected");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --roi=50,50,0,51,51,1",
+                 "--roi: the box holds none of the");
   ExpectBadInput("fit --urdf=" + Path("none.urdf") + " --scan=" + sample + out, "none.urdf");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --weighting=heavy",
                  "--weighting");

@@ -8,6 +8,7 @@
 #define EDGEFIT_PIPELINE_INSTANCE_CROP_H_
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
 #include "edgefit/model/kinematic_model.h"
@@ -36,6 +37,9 @@ double ModelReach(const KinematicModel& model);
 // center keep every cell.
 ScanSet CropToRays(const ScanSet& scans, const std::vector<Eigen::Vector3d>& centers_world,
                    double radius);
+
+// `scans` with every point outside `box_world` missing (edgefit fit --roi).
+ScanSet CropToBox(const ScanSet& scans, const Eigen::AlignedBox3d& box_world);
 
 }  // namespace edgefit
 
