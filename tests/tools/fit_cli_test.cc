@@ -70,9 +70,15 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   // in the joint states and the calibrated URDF.
   for (const char* joint : {"joint_1", "joint_2"}) {
     EXPECT_EQ(result["joint_status"][joint]["verdict"], "ok") << result["joint_status"].dump();
-    EXPECT_TRUE(result["joint_status"][joint]["alternatives"].empty());
     EXPECT_EQ(result["joint_status"][joint]["std"], result["joint_std"][joint]);
   }
+  // The arm's square base looks the same every quarter turn: joint_1's
+  // other placements are listed with the base's turn, joint_2 has none.
+  const auto& alternatives = result["joint_status"]["joint_1"]["alternatives"];
+  ASSERT_EQ(alternatives.size(), 3u) << alternatives.dump();
+  EXPECT_EQ(alternatives[0]["base_turn_deg"], -90);
+  EXPECT_TRUE(result["joint_status"]["joint_1"].contains("convention"));
+  EXPECT_TRUE(result["joint_status"]["joint_2"]["alternatives"].empty());
   EXPECT_FALSE(result["joint_status"].contains("cylinder_joint"));
   const std::string yaml = Slurp(Path("j.yaml"));
   EXPECT_NE(yaml.find("name: [joint_1, joint_2"), std::string::npos);
