@@ -57,11 +57,7 @@ uint32_t Crc32c(const void* data, size_t size) {
 #if defined(__x86_64__)
   if (HasSse42()) return ~Crc32cSse42(p, size, 0xFFFFFFFFu);
 #endif
-  return Crc32cPortable(p, size);
-}
-
-uint32_t Crc32cPortable(const void* data, size_t size) {
-  return ~Crc32cTable(static_cast<const uint8_t*>(data), size, 0xFFFFFFFFu);
+  return ~Crc32cTable(p, size, 0xFFFFFFFFu);
 }
 
 }  // namespace io_internal

@@ -12,8 +12,6 @@ namespace io_internal {
 // CRC-32C of `size` bytes; the SSE4.2 instruction where the CPU has it, a
 // table otherwise (same result).
 uint32_t Crc32c(const void* data, size_t size);
-// The table version alone (tests compare the two).
-uint32_t Crc32cPortable(const void* data, size_t size);
 
 }  // namespace io_internal
 }  // namespace edgefit
