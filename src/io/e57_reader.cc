@@ -8,6 +8,7 @@
 #include "e57_pages.h"
 #include "e57_records.h"
 #include "e57_xml.h"
+#include "edgefit/core/little_endian.h"
 #include "edgefit/io/e57.h"
 #include "read_common.h"
 
@@ -23,12 +24,6 @@ constexpr size_t kBlockRecords = 65536;
 // index bounds, not a scan.
 constexpr uint64_t kMaxCellsPerRecord = 16;
 constexpr uint64_t kMaxExtraCells = uint64_t{1} << 20;
-
-uint64_t Le64(const uint8_t* p) {
-  uint64_t v = 0;
-  for (int k = 7; k >= 0; --k) v = (v << 8) | p[k];
-  return v;
-}
 
 // Which prototype fields hold what; -1 when absent.
 struct FieldMap {
@@ -208,9 +203,8 @@ Status ReadFile(E57PageReader* file, const ReadOptions& options, ScanSet* scans)
   uint8_t h[kHeaderBytes];
   EDGEFIT_RETURN_IF_ERROR(file->Read(0, kHeaderBytes, h));
   if (std::memcmp(h, "ASTM-E57", 8) != 0) return Status::Error(name + ": not an E57 file (no ASTM-E57 signature)");
-  uint32_t major = 0;
-  std::memcpy(&major, h + 8, 4);
-  const uint64_t length = Le64(h + 16), xml_offset = Le64(h + 24), xml_length = Le64(h + 32), page = Le64(h + 40);
+  const uint64_t major = LoadUintLE(h + 8, 4);
+  const uint64_t length = LoadUintLE(h + 16, 8), xml_offset = LoadUintLE(h + 24, 8), xml_length = LoadUintLE(h + 32, 8), page = LoadUintLE(h + 40, 8);
   if (major != 1) return Status::Error(name + ": E57 version " + std::to_string(major) + " (edgefit reads version 1)");
   if (page != kE57PageBytes) return Status::Error(name + ": page size " + std::to_string(page) + " (the standard's is 1024)");
   if (length != file->physical_size()) {

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <limits>
 
+#include "edgefit/core/little_endian.h"
+
 
 namespace edgefit {
 namespace io_internal {
@@ -14,14 +16,9 @@ constexpr size_t kSectionHeaderBytes = 32;
 constexpr size_t kPacketMaxBytes = 65536;
 constexpr uint8_t kIndexPacket = 0, kDataPacket = 1, kEmptyPacket = 2;
 
-uint64_t LoadLe(const uint8_t* p, int bytes) {
-  uint64_t v = 0;
-  for (int k = bytes - 1; k >= 0; --k) v = (v << 8) | p[k];
-  return v;
-}
-
-void StoreLe(uint64_t v, int bytes, std::vector<uint8_t>* out) {
-  for (int k = 0; k < bytes; ++k) out->push_back(static_cast<uint8_t>(v >> (8 * k)));
+void AppendLe(uint64_t v, int bytes, std::vector<uint8_t>* out) {
+  out->resize(out->size() + static_cast<size_t>(bytes));
+  StoreUintLE(v, bytes, out->data() + out->size() - static_cast<size_t>(bytes));
 }
 
 // `n` (1..64) bits starting at bit `bit` of `bytes`, least significant first.
@@ -29,7 +26,7 @@ uint64_t ExtractBits(const std::vector<uint8_t>& bytes, uint64_t bit, int n) {
   const size_t byte = static_cast<size_t>(bit >> 3);
   const int shift = static_cast<int>(bit & 7);
   const int have = static_cast<int>(std::min<size_t>(8, bytes.size() - byte));
-  uint64_t v = LoadLe(bytes.data() + byte, have) >> shift;
+  uint64_t v = LoadUintLE(bytes.data() + byte, have) >> shift;
   if (shift + n > 64) v |= static_cast<uint64_t>(bytes[byte + 8]) << (64 - shift);
   return n < 64 ? v & ((uint64_t{1} << n) - 1) : v;
 }
@@ -42,14 +39,14 @@ class BitWriter {
     if (n == 0) return;
     acc_ |= v << used_;
     if (used_ + n >= 64) {
-      StoreLe(acc_, 8, out_);
+      AppendLe(acc_, 8, out_);
       acc_ = used_ == 0 ? 0 : v >> (64 - used_);
       used_ = used_ + n - 64;
     } else {
       used_ += n;
     }
   }
-  void Finish() { StoreLe(acc_, (used_ + 7) / 8, out_); acc_ = 0; used_ = 0; }
+  void Finish() { AppendLe(acc_, (used_ + 7) / 8, out_); acc_ = 0; used_ = 0; }
 
  private:
   std::vector<uint8_t>* out_;
@@ -85,8 +82,8 @@ Status E57RecordReader::Start() {
     return Status::Error(where_ + ": no CompressedVector section header at byte " +
                          std::to_string(points_.file_offset) + " (section id " + std::to_string(h[0]) + ")");
   }
-  const uint64_t length = LoadLe(h + 8, 8);
-  const uint64_t data = LoadLe(h + 16, 8);
+  const uint64_t length = LoadUintLE(h + 8, 8);
+  const uint64_t data = LoadUintLE(h + 16, 8);
   if (length < kSectionHeaderBytes || length % 4 != 0 || length > file_->logical_size() - start) {
     return Status::Error(where_ + ": the section header's length " + std::to_string(length) +
                          " does not fit the file");
@@ -108,12 +105,12 @@ Status E57RecordReader::ReadPacket() {
   }
   uint8_t head[4];
   EDGEFIT_RETURN_IF_ERROR(file_->Read(next_packet_, 4, head));
-  const uint64_t length = LoadLe(head + 2, 2) + 1;
+  const uint64_t length = LoadUintLE(head + 2, 2) + 1;
   if (length > section_end_ - next_packet_) return Status::Error(at + ": runs past the section's end");
   if (head[0] == kDataPacket) {
     packet_.resize(static_cast<size_t>(length));
     EDGEFIT_RETURN_IF_ERROR(file_->Read(next_packet_, packet_.size(), packet_.data()));
-    const size_t count = length >= 6 ? static_cast<size_t>(LoadLe(packet_.data() + 4, 2)) : 0;
+    const size_t count = length >= 6 ? static_cast<size_t>(LoadUintLE(packet_.data() + 4, 2)) : 0;
     if (count != streams_.size()) {
       return Status::Error(at + ": " + std::to_string(count) + " bytestreams for a prototype of " +
                            std::to_string(streams_.size()) + " fields");
@@ -121,7 +118,7 @@ Status E57RecordReader::ReadPacket() {
     size_t offset = 6 + 2 * count;
     if (offset > length) return Status::Error(at + ": too short for its bytestream lengths");
     for (size_t s = 0; s < count; ++s) {
-      const size_t n = static_cast<size_t>(LoadLe(packet_.data() + 6 + 2 * s, 2));
+      const size_t n = static_cast<size_t>(LoadUintLE(packet_.data() + 6 + 2 * s, 2));
       if (n > length - offset) return Status::Error(at + ": bytestream " + std::to_string(s) + " runs past the packet");
       streams_[s].bytes.insert(streams_[s].bytes.end(), packet_.data() + offset, packet_.data() + offset + n);
       offset += n;
@@ -198,9 +195,9 @@ void E57RecordWriter::Write(uint64_t record_count, const Fill& fill, E57PageWrit
   std::vector<uint8_t> bytes;
   bytes.push_back(1);  // CompressedVector section
   bytes.resize(8, 0);
-  StoreLe(SectionBytes(record_count), 8, &bytes);
-  StoreLe(E57Physical(out->logical_position() + kSectionHeaderBytes), 8, &bytes);
-  StoreLe(0, 8, &bytes);  // no index packet
+  AppendLe(SectionBytes(record_count), 8, &bytes);
+  AppendLe(E57Physical(out->logical_position() + kSectionHeaderBytes), 8, &bytes);
+  AppendLe(0, 8, &bytes);  // no index packet
   out->Write(bytes.data(), bytes.size());
   std::vector<double> values;
   std::vector<std::vector<uint8_t>> streams(fields_.size());
@@ -235,9 +232,9 @@ void E57RecordWriter::Write(uint64_t record_count, const Fill& fill, E57PageWrit
     }
     const size_t length = PacketBytes(count);
     bytes.assign({kDataPacket, 0});
-    StoreLe(length - 1, 2, &bytes);
-    StoreLe(fields_.size(), 2, &bytes);
-    for (const auto& s : streams) StoreLe(s.size(), 2, &bytes);
+    AppendLe(length - 1, 2, &bytes);
+    AppendLe(fields_.size(), 2, &bytes);
+    for (const auto& s : streams) AppendLe(s.size(), 2, &bytes);
     for (const auto& s : streams) bytes.insert(bytes.end(), s.begin(), s.end());
     bytes.resize(length, 0);
     out->Write(bytes.data(), bytes.size());

@@ -10,6 +10,7 @@
 #include "e57_records.h"
 #include "e57_xml.h"
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/core/little_endian.h"
 #include "edgefit/io/e57.h"
 
 namespace edgefit {
@@ -126,10 +127,6 @@ class RecordSource {
   size_t next_ = 0;
 };
 
-void StoreLe(uint64_t v, int bytes, uint8_t* out) {
-  for (int k = 0; k < bytes; ++k) out[k] = static_cast<uint8_t>(v >> (8 * k));
-}
-
 }  // namespace
 }  // namespace io_internal
 
@@ -151,11 +148,11 @@ Status WriteE57(const std::string& path, const ScanSet& scans) {
   const uint64_t length = (end + kE57PageDataBytes - 1) / kE57PageDataBytes * kE57PageBytes;
   uint8_t header[48] = {};
   std::memcpy(header, "ASTM-E57", 8);
-  StoreLe(1, 4, header + 8);  // version 1.0
-  StoreLe(length, 8, header + 16);
-  StoreLe(xml_offset, 8, header + 24);
-  StoreLe(xml.size(), 8, header + 32);
-  StoreLe(kE57PageBytes, 8, header + 40);
+  StoreUintLE(1, 4, header + 8);  // version 1.0
+  StoreUintLE(length, 8, header + 16);
+  StoreUintLE(xml_offset, 8, header + 24);
+  StoreUintLE(xml.size(), 8, header + 32);
+  StoreUintLE(kE57PageBytes, 8, header + 40);
   return WriteFileAtomically(path, [&](std::ostream& out) {
     E57PageWriter pages(&out);
     pages.Write(header, sizeof(header));
