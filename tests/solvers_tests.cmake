@@ -2,9 +2,9 @@
 # synthetic recovery to 1e-6 and within noise, parameterisations, stops,
 # determinism; the height map's convex tips and the symmetry axis (6.1);
 # on virtual scans: the cable-tube outlier case with edges and
-# the Eq. (9) joint sweep; the rough base registration (Sec. 5.1.1); the
-# whole-chain refinement and its covariance on the bundled robot; the
-# final basin check bringing a flipped wrist back.
+# the Eq. (9) joint sweep; the floor and the rough base registration
+# (Sec. 5.1.1); the whole-chain refinement and its covariance on the
+# bundled robot; the final basin check bringing a flipped wrist back.
 edgefit_add_test(solvers_test
   SOURCES
     solvers/link_motion_test.cc
@@ -17,6 +17,7 @@ edgefit_add_test(solvers_test
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
 edgefit_add_test(solvers_scan_test SINGLE_PROCESS
   SOURCES solvers/tube_outlier_test.cc solvers/joint_sweep_test.cc solvers/base_rough_test.cc
+          solvers/floor_height_test.cc
           solvers/chain_refinement_test.cc solvers/final_basins_test.cc solvers/coverings_test.cc
   LIBS edgefit::solvers edgefit::edges edgefit::scanner edgefit::scene edgefit::model glog::glog
        OpenMP::OpenMP_CXX)

@@ -37,49 +37,6 @@ bool BaseRoughOptions::IsValid(std::string* error) const {
   return true;
 }
 
-Status EstimateFloorHeight(const ScanSet& scans,
-                           const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
-                           const Eigen::AlignedBox3d& roi_world, double normal_cos,
-                           double* floor_z) {
-  constexpr double kBin = 0.005;                           // [m]
-  std::map<int64_t, std::pair<size_t, double>> histogram;  // bin -> (count, sum of z)
-  for (size_t s = 0; s < scans.scans.size(); ++s) {
-    const OrganizedScan& scan = scans.scans[s];
-    if (s >= normals_scanner.size() || normals_scanner[s].size() != scan.size()) continue;
-    const Eigen::Matrix3d R = scan.T_world_scanner().linear();
-    for (size_t i = 0; i < scan.size(); ++i) {
-      const Eigen::Vector3f& n = normals_scanner[s][i];
-      if (!scan.IsValid(i) || std::isnan(n.x())) continue;
-      if (std::abs((R.row(2) * n.cast<double>())(0)) < normal_cos) continue;
-      const Eigen::Vector3d p = scan.PointWorld(i);
-      if (!roi_world.isEmpty() && !roi_world.contains(p)) continue;
-      auto& bin = histogram[static_cast<int64_t>(std::floor(p.z() / kBin))];
-      ++bin.first;
-      bin.second += p.z();
-    }
-  }
-  if (histogram.empty()) return Status::Error("no horizontal surface (floor) in the scan");
-  int64_t best_bin = 0;
-  size_t best_count = 0;
-  for (const auto& [bin, count_sum] : histogram) {
-    if (count_sum.first > best_count) {
-      best_count = count_sum.first;
-      best_bin = bin;
-    }
-  }
-  // The mean over the peak bin and its neighbours (the noise spreads the floor).
-  double sum = 0.0;
-  size_t count = 0;
-  for (int64_t bin = best_bin - 2; bin <= best_bin + 2; ++bin) {
-    const auto it = histogram.find(bin);
-    if (it == histogram.end()) continue;
-    count += it->second.first;
-    sum += it->second.second;
-  }
-  *floor_z = sum / static_cast<double>(count);
-  return Status::Ok();
-}
-
 namespace {
 
 struct ModelPair {
@@ -102,10 +59,8 @@ Eigen::Isometry2d Hypothesis(const Eigen::Vector2d& ma, const Eigen::Vector2d& m
 
 }  // namespace
 
-Status FitBaseRough(const ScanSet& scans,
-                    const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
-                    const TriangleMesh& base_mesh_link, const BaseRoughOptions& options,
-                    BaseRoughResult* result) {
+Status FitBaseRough(const ScanSet& scans, double floor_z, const TriangleMesh& base_mesh_link,
+                    const BaseRoughOptions& options, BaseRoughResult* result) {
   CHECK(result != nullptr);
   const auto start = std::chrono::steady_clock::now();
   std::string error;
@@ -114,9 +69,6 @@ Status FitBaseRough(const ScanSet& scans,
     return Status::Error("base rough registration: the base link has no mesh");
   *result = BaseRoughResult();
 
-  double floor_z = 0.0;
-  EDGEFIT_RETURN_IF_ERROR(EstimateFloorHeight(scans, normals_scanner, options.roi_world,
-                                              options.floor_normal_cos, &floor_z));
   result->floor_z = floor_z;
 
   const Eigen::AlignedBox3d box_link = base_mesh_link.BoundingBox();

@@ -8,10 +8,7 @@
 // base with few corners may show no pair: then single corners are matched
 // with the yaw on a grid (BaseRoughOptions::single_corner_*). No manual
 // initialisation; an optional box limits the scan to a region.
-//
-// The floor: the most populated 5 mm height bin of the scan points with a
-// vertical normal (edge-stage normals), refined to the mean height of the
-// points in it and the two bins on either side.
+// The floor's height is given (floor_height.h).
 #ifndef EDGEFIT_SOLVERS_BASE_BASE_ROUGH_H_
 #define EDGEFIT_SOLVERS_BASE_BASE_ROUGH_H_
 
@@ -63,8 +60,6 @@ struct BaseRoughOptions {
   int single_corner_rescored = 200;
   // Optional region of the scan (world frame); empty: the whole scan.
   Eigen::AlignedBox3d roi_world;
-  // Floor: normals within this angle of vertical (cosine).
-  double floor_normal_cos = 0.97;
 
   bool IsValid(std::string* error) const;
 };
@@ -81,19 +76,11 @@ struct BaseRoughResult {
 };
 
 // base_mesh_link: the base link's mesh in its link frame (z up when the
-// robot stands level). normals_scanner: unit normals per scan per cell in the
-// scanner frame (EdgeDetectionResult::normals), NaN where undefined. Fails
-// with a message when no floor, no corners or no hypothesis is found.
-Status FitBaseRough(const ScanSet& scans,
-                    const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
-                    const TriangleMesh& base_mesh_link, const BaseRoughOptions& options,
-                    BaseRoughResult* result);
-
-// The floor height of the scan (see above), inside roi_world when not empty.
-Status EstimateFloorHeight(const ScanSet& scans,
-                           const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
-                           const Eigen::AlignedBox3d& roi_world, double normal_cos,
-                           double* floor_z);
+// robot stands level); floor_z: the scan's floor height [m, world]
+// (EstimateFloorHeight). Fails with a message when no corners or no
+// hypothesis is found.
+Status FitBaseRough(const ScanSet& scans, double floor_z, const TriangleMesh& base_mesh_link,
+                    const BaseRoughOptions& options, BaseRoughResult* result);
 
 }  // namespace edgefit
 

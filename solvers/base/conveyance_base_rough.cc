@@ -121,9 +121,8 @@ std::vector<double> Steps(const Interval& range, double step) {
 
 }  // namespace
 
-Status FitConveyanceBaseRough(const ScanSet& scans,
-                              const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
-                              const KinematicModel& model, const TriangleMesh& base_mesh_link,
+Status FitConveyanceBaseRough(const ScanSet& scans, double floor_z, const KinematicModel& model,
+                              const TriangleMesh& base_mesh_link,
                               const ConveyanceBaseRoughOptions& options, const BasePoseLoss& loss,
                               ConveyanceBaseRoughResult* result) {
   const auto start = std::chrono::steady_clock::now();
@@ -133,8 +132,7 @@ Status FitConveyanceBaseRough(const ScanSet& scans,
     return Status::Error("conveyance base rough: the base link has no mesh");
   }
   *result = ConveyanceBaseRoughResult();
-  EDGEFIT_RETURN_IF_ERROR(EstimateFloorHeight(scans, normals_scanner, options.roi_world,
-                                              options.floor_normal_cos, &result->floor_z));
+  result->floor_z = floor_z;
   double bottom = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d& v : base_mesh_link.vertices) bottom = std::min(bottom, v.z());
   const double base_z = result->floor_z - bottom;

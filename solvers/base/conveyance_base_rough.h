@@ -1,7 +1,7 @@
 // Rough registration of a conveyance system's base link (paper Sec. 6.1,
 // Fig. 11): the arms reaching up to hold the parts end in tips that are the
 // highest points around them.
-//   1. The scan's floor (EstimateFloorHeight, base_rough.h); the base stands
+//   1. The scan's floor (given: floor_height.h); the base stands
 //      level on it, so its pose is (x, y, yaw).
 //   2. Scan tips: the height map of the points above the floor and its
 //      convex tips (height_map.h, Eq. 11-13). Extension: each cell's height
@@ -62,7 +62,6 @@ struct ConveyanceBaseRoughOptions {
   int candidates = 4;  // the best poses returned (distinct by > along_step)
   // Optional region of the scan (world frame); empty: the whole scan.
   Eigen::AlignedBox3d roi_world;
-  double floor_normal_cos = 0.97;  // as BaseRoughOptions
 
   bool IsValid(std::string* error) const;
 };
@@ -86,12 +85,11 @@ struct ConveyanceBaseRoughResult {
 using BasePoseLoss = std::function<double(const Pose& T_world_base)>;
 
 // base_mesh_link: the base body's mesh in the base frame (its lowest point
-// stands on the floor). normals_scanner: as FitBaseRough. Fails with a
-// message when no floor, no symmetric tips (scan or CAD) or no match is
-// found.
-Status FitConveyanceBaseRough(const ScanSet& scans,
-                              const std::vector<std::vector<Eigen::Vector3f>>& normals_scanner,
-                              const KinematicModel& model, const TriangleMesh& base_mesh_link,
+// stands on the floor); floor_z: the scan's floor height [m, world]
+// (EstimateFloorHeight). Fails with a message when no symmetric tips (scan
+// or CAD) or no match is found.
+Status FitConveyanceBaseRough(const ScanSet& scans, double floor_z, const KinematicModel& model,
+                              const TriangleMesh& base_mesh_link,
                               const ConveyanceBaseRoughOptions& options, const BasePoseLoss& loss,
                               ConveyanceBaseRoughResult* result);
 

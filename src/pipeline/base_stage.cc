@@ -5,6 +5,7 @@
 #include "solvers/base/base_hypotheses.h"
 #include "solvers/base/base_rough.h"
 #include "solvers/base/conveyance_base_rough.h"
+#include "solvers/base/floor_height.h"
 #include "stages.h"
 
 namespace edgefit {
@@ -13,16 +14,15 @@ namespace {
 // The rough stage of options.base.method into result->base_rough (and
 // result->arm_tips); arm tips that find no placement fall back to the
 // cross sections.
-Status RoughBase(const ScanSet& scans, const std::vector<std::vector<Eigen::Vector3f>>& normals,
-                 const KinematicModel& model, const TriangleMesh& base_mesh,
-                 const FitOptions& options, const BasePoseLoss& base_loss, const ProgressFn& say,
-                 FitResult* result) {
+Status RoughBase(const ScanSet& scans, double floor_z, const KinematicModel& model,
+                 const TriangleMesh& base_mesh, const FitOptions& options,
+                 const BasePoseLoss& base_loss, const ProgressFn& say, FitResult* result) {
   using Method = BaseOptions::Method;
   if (options.base.method == Method::kArmTips) {
     say("base: rough registration (arm tips in a height map, symmetry axis)");
     ConveyanceBaseRoughOptions tips = options.base.arm_tips;
     tips.symmetry.seed = options.seed;
-    const Status status = FitConveyanceBaseRough(scans, normals, model, base_mesh, tips, base_loss,
+    const Status status = FitConveyanceBaseRough(scans, floor_z, model, base_mesh, tips, base_loss,
                                                  &result->arm_tips);
     if (status.ok()) {
       result->base_rough_method = Method::kArmTips;
@@ -46,28 +46,31 @@ Status RoughBase(const ScanSet& scans, const std::vector<std::vector<Eigen::Vect
   BaseRoughOptions rough = options.base.cross_sections;
   rough.seed = options.seed;
   result->base_rough_method = Method::kCrossSections;
-  return FitBaseRough(scans, normals, base_mesh, rough, &result->base_rough);
+  return FitBaseRough(scans, floor_z, base_mesh, rough, &result->base_rough);
 }
 
 }  // namespace
 
-Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
-                      const std::vector<std::vector<Eigen::Vector3f>>& normals, const Body& base,
+Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const Body& base,
                       const CadSamples& cad, const JointSweep& sweep, const FitOptions& options,
                       const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs) {
   roughs->clear();
+  const auto start = std::chrono::steady_clock::now();
+  // The base stands level on the floor (Sec. 5.1.1, 6.1).
+  const Eigen::AlignedBox3d& roi = options.base.method == BaseOptions::Method::kArmTips
+                                       ? options.base.arm_tips.roi_world
+                                       : options.base.cross_sections.roi_world;
+  double floor_z = 0.0;
+  const Status floor = EstimateFloorHeight(
+      scans, options.base.has_initial ? Eigen::AlignedBox3d() : roi, options.base.floor, &floor_z);
   if (options.base.has_initial) {
+    if (!floor.ok()) return Status::Error("base hint: " + floor.message());
     Pose T_world_base = options.base.T_world_base_initial;
-    double floor_z = 0.0;
-    const Status status =
-        EstimateFloorHeight(scans, normals, Eigen::AlignedBox3d(),
-                            options.base.cross_sections.floor_normal_cos, &floor_z);
-    if (!status.ok()) return Status::Error("base hint: " + status.message());
     T_world_base.translation().z() += floor_z;
     roughs->push_back(T_world_base);
     return Status::Ok();
   }
-  const auto start = std::chrono::steady_clock::now();
+  if (!floor.ok()) return Status::Error("base rough registration: " + floor.message());
   TriangleMesh base_mesh;
   for (size_t k = 0; k < base.links.size(); ++k) {
     base_mesh.Append(model.links()[static_cast<size_t>(base.links[k])].mesh, base.T_body_link[k]);
@@ -75,7 +78,7 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
   const SurfaceSamples base_sweep = BodySamples(base, cad.sweep, options.samples.max_sweep_samples);
   auto base_loss = [&](const Pose& T) { return sweep.LossAt(base_sweep, T, options.chain.sweep); };
   EDGEFIT_RETURN_IF_ERROR(
-      RoughBase(scans, normals, model, base_mesh, options, base_loss, say, result));
+      RoughBase(scans, floor_z, model, base_mesh, options, base_loss, say, result));
   *roughs = RankBaseHypotheses(&result->base_rough.candidates, base_mesh.BoundingBox().sizes(),
                                result->base_rough_method == BaseOptions::Method::kCrossSections,
                                base_loss, base_sweep.size(), options.base.hypotheses, say);

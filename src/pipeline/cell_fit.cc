@@ -2,6 +2,7 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "edgefit/scan/mixed_pixels.h"
@@ -33,9 +34,12 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
     *scans = WithoutMixedPixels(*scans, first.mixed_pixels, &result->mixed_pixels);
     say("cell: " + std::to_string(result->mixed_pixels) + " mixed pixels removed");
   }
-  say("cell: edges on " + std::to_string(scans->TotalValid()) + " points");
-  EdgeDetectionResult edges;
-  EDGEFIT_RETURN_IF_ERROR(DetectEdges(*scans, first.edges, &edges));
+  EdgeDetectionResult edges;  // Sec. 4, once for the cell, when a model's weighting uses it
+  if (std::any_of(models.begin(), models.end(),
+                  [](const CellModel& m) { return !m.options.uniform_weights; })) {
+    say("cell: edges on " + std::to_string(scans->TotalValid()) + " points");
+    EDGEFIT_RETURN_IF_ERROR(DetectEdges(*scans, first.edges, &edges));
+  }
   result->edge_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (size_t m = 0; m < models.size(); ++m) {
@@ -52,9 +56,9 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
       CellInstance instance;
       instance.model = static_cast<int>(m);
       instance.index = outcome.found + 1;
-      EDGEFIT_RETURN_IF_ERROR(
-          FitWithEdges(*cell_model.model, *scans, edges, fit_options,
-              [&](const std::string& line) { say(label + ": " + line); }, &instance.fit));
+      EDGEFIT_RETURN_IF_ERROR(FitWithEdges(
+          *cell_model.model, *scans, edges, fit_options,
+          [&](const std::string& line) { say(label + ": " + line); }, &instance.fit));
       if (!IsInstance(instance.fit)) {
         outcome.stopped = instance.fit.message;
         outcome.rejected = true;
@@ -65,9 +69,11 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
       EDGEFIT_RETURN_IF_ERROR(MarkModelPoints(*scans, *cell_model.model, instance.fit.q,
                                               instance.fit.T_world_base, options.removal, &marks));
       EDGEFIT_RETURN_IF_ERROR(MarkAttachedPoints(*scans, *cell_model.model, instance.fit.q,
-                                                 instance.fit.T_world_base, options.attached, &marks));
+                                                 instance.fit.T_world_base, options.attached,
+                                                 &marks));
       instance.removed_points = RemoveMarkedPoints(marks, scans);
-      say("cell: " + label + " found; " + std::to_string(instance.removed_points) + " points removed");
+      say("cell: " + label + " found; " + std::to_string(instance.removed_points) +
+          " points removed");
       result->instances.push_back(std::move(instance));
       ++outcome.found;
     }

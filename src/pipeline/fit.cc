@@ -23,7 +23,7 @@ struct Attempt {
   WeightedIcpSummary base;
   std::vector<double> q;
   std::vector<JointRecord> records;
-  double loss = 0.0;  // Eq. (9) of the whole model
+  double loss = 0.0;           // Eq. (9) of the whole model
   bool base_mismatch = false;  // FitOptions::min_base_inlier_share: the chain was not fitted
 };
 
@@ -61,10 +61,12 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
   }
   const ScanSet& scans = options.remove_mixed_pixels ? without_mixed : written_scans;
 
-  // Sec. 4: edge weights and normals.
-  if (progress) progress("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
+  // Sec. 4: edge weights and normals, when the weighting uses them.
   EdgeDetectionResult edges;
-  EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
+  if (!options.uniform_weights) {
+    if (progress) progress("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
+    EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
+  }
   const double edge_seconds = Since(start);
   EDGEFIT_RETURN_IF_ERROR(FitWithEdges(model, scans, edges, options, progress, result));
   result->mixed_pixels = mixed_pixels;
@@ -82,6 +84,9 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
     if (progress) progress(line);
   };
   EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, options));
+  if (!options.uniform_weights && edges.w_edge.size() != scans.scans.size()) {
+    return Status::Error("robot fit: edge weighting needs the scans' edges (Sec. 4)");
+  }
   *result = FitResult();
   auto not_ok = [&](const std::string& message) {
     result->ok = false;
@@ -102,6 +107,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   cad.chain = ChainSamples(model, cad, options);
 
   const CellWeights* weights = options.uniform_weights ? nullptr : &edges.w_edge;
+  const auto* scan_normals = edges.normals.empty() ? nullptr : &edges.normals;
 
   // Sec. 5.1.1 / 6.1: the base body's rough poses.
   const Body base = MakeBody(model, model.root_link(), -1);
@@ -117,7 +123,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
     const ScanVisibility visibility(&scans);
     const JointSweep sweep(&search.lattice(), &visibility);
     const Status rough =
-        RoughBasePoses(model, scans, edges.normals, base, cad, sweep, options, say, result, &roughs);
+        RoughBasePoses(model, scans, base, cad, sweep, options, say, result, &roughs);
     if (!rough.ok()) return not_ok(rough.message());
   }
 
@@ -133,7 +139,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   const ScanSet& work = options.crop.enabled ? cropped : scans;
   CorrespondenceSearch search(&work, weights);
   const ScanVisibility visibility(&work);
-  WeightedIcp icp(&work, &search, &edges.normals, options.residuals);
+  WeightedIcp icp(&work, &search, scan_normals, options.residuals);
   const JointSweep sweep(&search.lattice(), &visibility);
 
   // Sec. 5.1.2 and 5.2-5.3 from each rough base pose kept: the base's
@@ -203,12 +209,11 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   // chain at once on them, and its covariance.
   ScanSet aligned_scans;
   bool align = false;
-  EDGEFIT_RETURN_IF_ERROR(
-      AlignStationsStage(model, work, &search, weights, cad, options, say, result, &aligned_scans,
-                         &align));
+  EDGEFIT_RETURN_IF_ERROR(AlignStationsStage(model, work, &search, weights, cad, options, say,
+                                             result, &aligned_scans, &align));
   const ScanSet& final_scans = align ? aligned_scans : work;
   CorrespondenceSearch final_search(&final_scans, weights);
-  WeightedIcp final_icp(&final_scans, &final_search, &edges.normals, options.residuals);
+  WeightedIcp final_icp(&final_scans, &final_search, scan_normals, options.residuals);
   CellMask covered;
   EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad, options,
                                            say, result, &covered));
@@ -246,7 +251,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   }
   CorrespondenceSearch clean_search(&clean_scans, weights);
   const ScanVisibility clean_visibility(&clean_scans);
-  WeightedIcp clean_icp(&clean_scans, &clean_search, &edges.normals, options.residuals);
+  WeightedIcp clean_icp(&clean_scans, &clean_search, scan_normals, options.residuals);
   const JointSweep clean_sweep(&clean_search.lattice(), &clean_visibility);
   ChainFitter clean_chain(model, options.chain, options.samples, cad.icp, cad.sweep, &clean_icp,
                           &clean_sweep, say);

@@ -11,8 +11,8 @@ WeightedIcpOptions BaseOptions::DefaultIcp() {
 }
 
 bool BaseOptions::IsValid(std::string* error) const {
-  return cross_sections.IsValid(error) && arm_tips.IsValid(error) && hypotheses.IsValid(error) &&
-         icp.IsValid(error);
+  return floor.IsValid(error) && cross_sections.IsValid(error) && arm_tips.IsValid(error) &&
+         hypotheses.IsValid(error) && icp.IsValid(error);
 }
 
 bool QualityOptions::IsValid(std::string* error) const {
@@ -32,9 +32,9 @@ bool FitOptions::IsValid(std::string* error) const {
     if (error != nullptr) *error = "min_base_inlier_share must be in [0, 1]";
     return false;
   }
-  return mixed_pixels.IsValid(error) && crop.IsValid(error) && edges.IsValid(error) && stations.IsValid(error) &&
-         residuals.IsValid(error) && samples.IsValid(error) && base.IsValid(error) &&
-         chain.IsValid(error) && refinement.chain.IsValid(error) &&
+  return mixed_pixels.IsValid(error) && crop.IsValid(error) && edges.IsValid(error) &&
+         stations.IsValid(error) && residuals.IsValid(error) && samples.IsValid(error) &&
+         base.IsValid(error) && chain.IsValid(error) && refinement.chain.IsValid(error) &&
          refinement.coverings.IsValid(error) && quality.IsValid(error);
 }
 

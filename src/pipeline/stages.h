@@ -40,8 +40,7 @@ struct CadSamples {
 // from options.base's hint, or the rough stage of its method ranked by the
 // Eq. (9) loss of the base alone (base_hypotheses.h). An error means the
 // scan gave no base pose (the fit is not ok), never bad options.
-Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans,
-                      const std::vector<std::vector<Eigen::Vector3f>>& normals, const Body& base,
+Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const Body& base,
                       const CadSamples& cad, const JointSweep& sweep, const FitOptions& options,
                       const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs);
 

@@ -12,8 +12,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/primitive_meshes.h"
+#include "solvers/base/floor_height.h"
 #include "solvers/icp_test_util.h"
 #include "solvers/link_scan_test_util.h"
 
@@ -37,7 +37,7 @@ const Pose kTrueBasePose = PoseFromXyzRpy({1.2, -0.4, 0.0}, {0, 0, 0.7});
 
 struct BaseScene {
   ScanSet scans;
-  EdgeDetectionResult edges;
+  double floor_z = 0.0;
 };
 
 const BaseScene& GetScene() {
@@ -45,7 +45,8 @@ const BaseScene& GetScene() {
     auto* out = new BaseScene;
     VirtualScan scan = testing_util::ScanLinkOnFloor(RoundBase(), kTrueBasePose, {}, 5);
     out->scans = std::move(scan.scans);
-    CHECK(DetectEdges(out->scans, EdgeDetectionOptions(), &out->edges).ok());
+    CHECK(
+        EstimateFloorHeight(out->scans, Eigen::AlignedBox3d(), FloorOptions(), &out->floor_z).ok());
     return out;
   }();
   return *scene;
@@ -54,7 +55,7 @@ const BaseScene& GetScene() {
 void ExpectNearTruth(const BaseRoughOptions& options) {
   const BaseScene& s = GetScene();
   BaseRoughResult result;
-  const Status status = FitBaseRough(s.scans, s.edges.normals, RoundBase(), options, &result);
+  const Status status = FitBaseRough(s.scans, s.floor_z, RoundBase(), options, &result);
   ASSERT_TRUE(status.ok()) << status.message();
   const double t = TranslationError(result.T_world_base, kTrueBasePose);
   const double r = RotationErrorRad(result.T_world_base, kTrueBasePose);

@@ -1,6 +1,7 @@
 // Fits a kinematic model (a KinematicModel, end effectors attached) of an
 // articulated robot or a conveyance system to a scan: the paper's pipeline.
-//   Sec. 4    edges and their weights on the scan lattice;
+//   Sec. 4    edges and their weights on the scan lattice (with edge
+//             weighting; the default uniform weighting needs none);
 //   Sec. 5.1  the base: rough poses (5.1.1 cross sections, or 6.1 arm tips),
 //             then the precise weighted ICP (5.1.2);
 //   Sec. 5.2  every joint, parents first: the Eq. (9) sweep, then the
@@ -45,6 +46,7 @@ Status Fit(const KinematicModel& model, const ScanSet& scans, const FitOptions& 
 // (Sec. 4: normals and weights) were detected before, e.g. once for the
 // scans of a whole cell (cell_fit.h) from which instances were removed
 // since (their cells are missing now, so their normals are not read).
+// With uniform weights `edges` may be empty (Fit() detects none then).
 // Mixed pixels are not removed here; timings.edges stays 0.
 Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
                     const EdgeDetectionResult& edges, const FitOptions& options,

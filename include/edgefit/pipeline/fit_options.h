@@ -16,6 +16,7 @@
 #include "solvers/base/base_hypotheses.h"
 #include "solvers/base/base_rough.h"
 #include "solvers/base/conveyance_base_rough.h"
+#include "solvers/base/floor_height.h"
 #include "solvers/joints/body.h"
 #include "solvers/joints/chain_fitter.h"
 #include "solvers/joints/observability.h"
@@ -34,6 +35,8 @@ struct BaseOptions {
   // find no placement, the cross sections are tried.
   enum class Method { kCrossSections, kArmTips };
   Method method = Method::kCrossSections;
+  // The floor both rough stages and the hint stand the base on.
+  FloorOptions floor;
   BaseRoughOptions cross_sections;      // its seed is FitOptions::seed
   ConveyanceBaseRoughOptions arm_tips;  // its symmetry seed is FitOptions::seed
   BaseHypothesesOptions hypotheses;
