@@ -4,6 +4,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace edgefit {
 namespace {
@@ -53,10 +55,30 @@ TEST(AngularLatticeTest, RejectsOutsideAndOrigin) {
   const AngularLattice lattice = MakeLattice(10, 10, 0.0, 0.1, 0.0, 0.1);
   double r, c;
   EXPECT_FALSE(lattice.Project(Eigen::Vector3d::Zero(), &r, &c));
-  EXPECT_FALSE(lattice.Project(Eigen::Vector3d(-1, 0, 0.1), &r, &c));  // behind
+  EXPECT_FALSE(lattice.Project(Eigen::Vector3d(-1, 0, 0.1), &r, &c));    // behind
   EXPECT_FALSE(lattice.Project(Eigen::Vector3d(1, 0.1, -0.5), &r, &c));  // below row 0
   EXPECT_TRUE(lattice.Project(Eigen::Vector3d(1, -0.04, 0.0), &r, &c));  // half a step out
   EXPECT_NEAR(c, -0.4, 1e-2);
+}
+
+TEST(AngularLatticeTest, AnglesAgreeWithLibm) {
+  // Directions in every octant, on the octants' borders and on the axes.
+  const AngularLattice lattice = MakeLattice(3, 3, -0.1, 0.1, -0.1, 0.1);
+  uint64_t state = 12345;
+  auto uniform = [&state] {  // [-1, 1)
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0;
+  };
+  std::vector<Eigen::Vector3d> directions = {{1, 0, 0},  {0, 1, 0},  {-1, 0, 0}, {0, -1, 0},
+                                             {0, 0, 1},  {0, 0, -1}, {1, 1, 1},  {-1, -1, -1},
+                                             {1, -1, 0}, {-1, 1, 0}, {2, 1, 0.5}};
+  for (int i = 0; i < 100000; ++i) directions.emplace_back(uniform(), uniform(), uniform());
+  for (const Eigen::Vector3d& d : directions) {
+    double elevation, azimuth;
+    lattice.Angles(d, &elevation, &azimuth);
+    EXPECT_NEAR(elevation, std::atan2(d.z(), std::hypot(d.x(), d.y())), 2e-13) << d.transpose();
+    EXPECT_NEAR(azimuth, std::atan2(d.y(), d.x()), 2e-13) << d.transpose();
+  }
 }
 
 TEST(AngularLatticeTest, FullCircleHasNoSeam) {
