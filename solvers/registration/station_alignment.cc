@@ -89,34 +89,34 @@ Status AlignStationsToModel(const KinematicModel& model,
   centre /= static_cast<double>(points.size());
 
   const Eigen::Matrix<double, 6, 1> prior =
-      (Eigen::Matrix<double, 6, 1>() << Eigen::Vector3d::Constant(
-           std::pow(options.point_sigma / options.prior_rotation, 2)),
+      (Eigen::Matrix<double, 6, 1>()
+           << Eigen::Vector3d::Constant(std::pow(options.point_sigma / options.prior_rotation, 2)),
        Eigen::Vector3d::Constant(std::pow(options.point_sigma / options.prior_translation, 2)))
           .finished();
   std::vector<Pose> D(n, Pose::Identity());
+  std::vector<Pose> T_written(n);
+  for (size_t s = 0; s < n; ++s) T_written[s] = scans->scans[s].T_world_scanner();
   summary->stations.resize(n);
   for (size_t s = 0; s < n; ++s) {
-    ScanSet one;
-    one.scans.push_back(scans->scans[s]);
-    const Pose T_written = one.scans[0].T_world_scanner();
+    OrganizedScan& scan = scans->scans[s];
     // The samples facing this station.
     std::vector<Eigen::Vector3f> facing;
     std::vector<size_t> index;
     for (size_t i = 0; i < points.size(); ++i) {
-      if (normals[i].dot(T_written.translation() - points[i].cast<double>()) > 0.0) {
+      if (normals[i].dot(T_written[s].translation() - points[i].cast<double>()) > 0.0) {
         facing.push_back(points[i]);
         index.push_back(i);
       }
     }
     // Point-to-plane residuals at the current correction, and one GN step.
     auto step = [&](double gate, bool solve, size_t* matches, double* rms) {
-      one.scans[0].set_T_world_scanner(D[s] * T_written);
-      LatticeSearch search(&one, nullptr);
+      scan.set_T_world_scanner(D[s] * T_written[s]);
+      LatticeSearch search(scans, nullptr);
       CorrespondenceOptions correspondence;
       correspondence.max_distance = gate;
       correspondence.window = options.lattice_window;
       std::vector<Correspondence> found;
-      search.Find(facing, correspondence, &found);
+      search.FindIn(static_cast<int>(s), facing, correspondence, &found);
       Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
       Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
       double sum2 = 0.0;
@@ -124,7 +124,7 @@ Status AlignStationsToModel(const KinematicModel& model,
       for (const Correspondence& c : found) {
         if (excluded != nullptr && (*excluded)[s][static_cast<size_t>(c.cell)]) continue;
         const Eigen::Vector3d& nrm = normals[index[static_cast<size_t>(c.source)]];
-        const Eigen::Vector3d p = one.scans[0].PointWorld(static_cast<size_t>(c.cell));
+        const Eigen::Vector3d p = scan.PointWorld(static_cast<size_t>(c.cell));
         const double r = nrm.dot(p - facing[static_cast<size_t>(c.source)].cast<double>());
         const double w =
             std::abs(r) <= options.huber_scale ? 1.0 : options.huber_scale / std::abs(r);
@@ -153,6 +153,7 @@ Status AlignStationsToModel(const KinematicModel& model,
       gate = std::max(options.final_gate, 0.5 * gate);
     }
     step(options.final_gate, false, &c.matches, &c.rms_after);
+    scan.set_T_world_scanner(T_written[s]);  // until the gauge below
   }
 
   // Gauge: take out the mean correction (about the centre).
@@ -162,10 +163,9 @@ Status AlignStationsToModel(const KinematicModel& model,
   const Pose M = MotionAbout(mean.head<3>(), mean.tail<3>(), centre);
   for (size_t s = 0; s < n; ++s) {
     StationCorrection& c = summary->stations[s];
-    const Pose T_written = scans->scans[s].T_world_scanner();
     c.correction = M.inverse() * D[s];
-    const Pose T_aligned = c.correction * T_written;
-    c.translation = (T_aligned.translation() - T_written.translation()).norm();
+    const Pose T_aligned = c.correction * T_written[s];
+    c.translation = (T_aligned.translation() - T_written[s].translation()).norm();
     c.rotation = Eigen::AngleAxisd(c.correction.linear()).angle();
     scans->scans[s].set_T_world_scanner(T_aligned);
   }
@@ -183,16 +183,16 @@ double LargestCorrection(const StationAlignmentSummary& summary) {
 }
 
 double LargestChange(const StationAlignmentSummary& before, const StationAlignmentSummary& after,
-                     const ScanSet& written) {
+                     const std::vector<Pose>& T_world_written) {
   if (before.stations.size() != after.stations.size() ||
-      before.stations.size() != written.scans.size()) {
+      before.stations.size() != T_world_written.size()) {
     return std::numeric_limits<double>::infinity();
   }
   double largest = 0.0;
-  for (size_t s = 0; s < written.scans.size(); ++s) {
+  for (size_t s = 0; s < T_world_written.size(); ++s) {
     const Pose& a = before.stations[s].correction;
     const Pose& b = after.stations[s].correction;
-    const Eigen::Vector3d origin = written.scans[s].T_world_scanner().translation();
+    const Eigen::Vector3d origin = T_world_written[s].translation();
     const double angle = Eigen::AngleAxisd(b.linear() * a.linear().transpose()).angle();
     largest = std::max(largest, (b * origin - a * origin).norm() + 5.0 * angle);
   }

@@ -127,9 +127,10 @@ Status AlignStationsToModel(const KinematicModel& model,
 double LargestCorrection(const StationAlignmentSummary& summary);
 
 // The largest change of any station's correction between two registrations
-// of the same scans (`written`: as the file has them), measured the same way.
+// of the same scans (T_world_written: each station's pose as the file has
+// it), measured the same way.
 double LargestChange(const StationAlignmentSummary& before, const StationAlignmentSummary& after,
-                     const ScanSet& written);
+                     const std::vector<Pose>& T_world_written);
 
 // One line for the progress log: RMS before and after, the largest correction.
 std::string StationAlignmentLine(const StationAlignmentSummary& summary);

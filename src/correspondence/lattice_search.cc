@@ -79,6 +79,11 @@ Correspondence LatticeSearch::NearestIn(int only_scan, const Eigen::Vector3f& q_
 
 void LatticeSearch::Find(const std::vector<Eigen::Vector3f>& q_world,
                          const CorrespondenceOptions& options, std::vector<Correspondence>* out) {
+  FindIn(-1, q_world, options, out);
+}
+
+void LatticeSearch::FindIn(int only_scan, const std::vector<Eigen::Vector3f>& q_world,
+                           const CorrespondenceOptions& options, std::vector<Correspondence>* out) {
   CHECK(out != nullptr);
   std::string error;
   CHECK(options.IsValid(&error)) << error;
@@ -89,7 +94,7 @@ void LatticeSearch::Find(const std::vector<Eigen::Vector3f>& q_world,
 #pragma omp parallel for schedule(dynamic, 512)
   for (int64_t i = 0; i < n; ++i) {
     Correspondence& b = best_[static_cast<size_t>(i)];
-    b = Nearest(q_world[static_cast<size_t>(i)], options.window, max_d2);
+    b = NearestIn(only_scan, q_world[static_cast<size_t>(i)], options.window, max_d2);
     b.source = static_cast<int>(i);
   }
 

@@ -127,16 +127,21 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
     if (!rough.ok()) return not_ok(rough.message());
   }
 
-  // Extension: the rest on the rays near the rough base poses only.
-  ScanSet cropped;
+  // Extension: the rest on the rays near the rough base poses only. The
+  // fit has its own copy when it crops or registers the stations (in place,
+  // below: the searches built on `work` before are stale after).
+  const bool align_stations = options.stations.align && scans.scans.size() > 1;
+  ScanSet own;
   if (options.crop.enabled) {
     std::vector<Eigen::Vector3d> centers;
     for (const Pose& T : roughs) centers.push_back(T.translation());
-    cropped = CropToRays(scans, centers, ModelReach(model) + options.crop.margin);
-    say("crop: " + std::to_string(cropped.TotalValid()) + " of " +
-        std::to_string(scans.TotalValid()) + " points on rays near the rough base poses");
+    own = CropToRays(scans, centers, ModelReach(model) + options.crop.margin);
+    say("crop: " + std::to_string(own.TotalValid()) + " of " + std::to_string(scans.TotalValid()) +
+        " points on rays near the rough base poses");
+  } else if (align_stations) {
+    own = scans;
   }
-  const ScanSet& work = options.crop.enabled ? cropped : scans;
+  const ScanSet& work = options.crop.enabled || align_stations ? own : scans;
   CorrespondenceSearch search(&work, weights);
   const ScanVisibility visibility(&work);
   WeightedIcp icp(&work, &search, scan_normals, options.residuals);
@@ -207,11 +212,11 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
 
   // Extensions: the stations registered to the fitted model, then the whole
   // chain at once on them, and its covariance.
-  ScanSet aligned_scans;
-  bool align = false;
-  EDGEFIT_RETURN_IF_ERROR(AlignStationsStage(model, work, &search, weights, cad, options, say,
-                                             result, &aligned_scans, &align));
-  const ScanSet& final_scans = align ? aligned_scans : work;
+  if (align_stations) {
+    EDGEFIT_RETURN_IF_ERROR(
+        AlignStationsStage(model, &own, &search, weights, cad, options, say, result));
+  }
+  const ScanSet& final_scans = work;
   CorrespondenceSearch final_search(&final_scans, weights);
   WeightedIcp final_icp(&final_scans, &final_search, scan_normals, options.residuals);
   CellMask covered;

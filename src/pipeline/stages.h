@@ -93,13 +93,14 @@ void SayWhyNotOk(const KinematicModel& model, const Status& resolved, const FitO
 // (options.stations), the coverings found there left out; then, while the
 // corrections have not settled (StationAlignmentOptions::rounds, settle),
 // the chain refined on the corrected stations (RefineWholeChain: result's
-// estimate moves) and the stations registered again there. *aligned gets
-// the scans with the last corrections and *done whether they were made
-// (more than one station and options.stations.align). search: over `scans`.
-Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
+// estimate moves) and the stations registered again there. *scans get the
+// last corrections in place (with more than one station and
+// options.stations.align). search: over *scans at their poses on entry
+// (as written); searches built on them before are stale after.
+Status AlignStationsStage(const KinematicModel& model, ScanSet* scans,
                           CorrespondenceSearch* search, const CellWeights* weights,
                           const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                          FitResult* result, ScanSet* aligned, bool* done);
+                          FitResult* result);
 
 // After the second pass (the chain fitted again without the coverings): a
 // revolute joint more than options.refinement.coverings.basin_change from

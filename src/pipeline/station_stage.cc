@@ -8,23 +8,27 @@
 
 namespace edgefit {
 
-Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
-                          CorrespondenceSearch* search, const CellWeights* weights,
-                          const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                          FitResult* result, ScanSet* aligned, bool* done) {
+Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, CorrespondenceSearch* search,
+                          const CellWeights* weights, const CadSamples& cad,
+                          const FitOptions& options, const ProgressFn& say, FitResult* result) {
   const StationAlignmentOptions& stations = options.stations;
-  *done = stations.align && scans.scans.size() > 1;
-  if (!*done) return Status::Ok();
+  if (!stations.align || scans->scans.size() < 2) return Status::Ok();
   const auto start = std::chrono::steady_clock::now();
+  std::vector<Pose> T_written;
+  for (const OrganizedScan& scan : scans->scans) T_written.push_back(scan.T_world_scanner());
   const int rounds = options.refinement.chain.refine ? stations.rounds : 1;
   for (int round = 0; round < rounds; ++round) {
     if (round > 0) {
       // The chain refined on the stations as last registered, so that the
-      // next registration is made at a better estimate.
-      CorrespondenceSearch aligned_search(aligned, weights);
+      // next registration is made at a better estimate; that one starts
+      // from the written poses again, at which `search` was built.
+      CorrespondenceSearch aligned_search(scans, weights);
       CellMask covered;
-      EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, *aligned, &aligned_search, weights, cad,
+      EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, *scans, &aligned_search, weights, cad,
                                                options, say, result, &covered));
+      for (size_t k = 0; k < T_written.size(); ++k) {
+        scans->scans[k].set_T_world_scanner(T_written[k]);
+      }
     }
     // Coverings (jackets) would pull a station towards the side it sees them
     // on: found at this estimate and left out, and with them the links they
@@ -33,25 +37,18 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
     CoveringSummary coverings;
     const bool find_coverings = options.refinement.coverings.rounds > 0;
     if (find_coverings) {
-      EDGEFIT_RETURN_IF_ERROR(FindCoverings(
-          model, scans, search, cad.chain, result->T_world_base, result->q,
-          options.refinement.coverings, options.refinement.chain.icp.correspondence.use_lattice,
-          &covered, &coverings));
+      EDGEFIT_RETURN_IF_ERROR(FindCoverings(model, *scans, search, cad.chain, result->T_world_base,
+                                            result->q, options.refinement.coverings,
+                                            options.refinement.chain.icp.correspondence.use_lattice,
+                                            &covered, &coverings));
     }
     const StationAlignmentSummary last = result->stations;
-    if (round == 0) {
-      *aligned = scans;
-    } else {  // registered again from the written poses
-      for (size_t k = 0; k < scans.scans.size(); ++k) {
-        aligned->scans[k].set_T_world_scanner(scans.scans[k].T_world_scanner());
-      }
-    }
     const std::vector<uint8_t> left_out =
         find_coverings ? coverings.LinksCoveredOver(stations.max_covered_share)
                        : std::vector<uint8_t>();
     EDGEFIT_RETURN_IF_ERROR(AlignStationsToModel(model, cad.chain, result->T_world_base, result->q,
                                                  find_coverings ? &covered : nullptr, left_out,
-                                                 stations, aligned, &result->stations));
+                                                 stations, scans, &result->stations));
     result->stations.rounds = round + 1;
     say(StationAlignmentLine(result->stations));
     // The stations agree as written, or their corrections settled.
@@ -59,7 +56,7 @@ Status AlignStationsStage(const KinematicModel& model, const ScanSet& scans,
       if (LargestCorrection(result->stations) <= stations.refit_correction) break;
       continue;
     }
-    const double change = LargestChange(last, result->stations, scans);
+    const double change = LargestChange(last, result->stations, T_written);
     char line[160];
     std::snprintf(line, sizeof(line),
                   "stations: registered again at the refined estimate (round %d): corrections "

@@ -286,16 +286,14 @@ TEST(RealisticFitTest, StationsOfTheFitAgree) {
 // How far a station's correction moved between two registrations: its
 // origin's shift plus its rotation times 5 m.
 TEST(RealisticFitTest, LargestChangeOfTheCorrections) {
-  ScanSet written;
-  written.scans.resize(2);
-  written.scans[0].set_T_world_scanner(PoseFromXyzRpy({3.0, 0.0, 1.5}, {0.0, 0.0, 0.0}));
-  written.scans[1].set_T_world_scanner(PoseFromXyzRpy({0.0, 4.0, 1.5}, {0.0, 0.0, 1.0}));
+  const std::vector<Pose> written = {PoseFromXyzRpy({3.0, 0.0, 1.5}, {0.0, 0.0, 0.0}),
+                                     PoseFromXyzRpy({0.0, 4.0, 1.5}, {0.0, 0.0, 1.0})};
   StationAlignmentSummary before, after;
   before.stations.resize(2);
   after.stations.resize(2);
   after.stations[0].correction = PoseFromXyzRpy({0.0002, 0.0, 0.0}, {0.0, 0.0, 0.0});
   // About the scanner's own origin: the origin stays, the rotation counts.
-  const Eigen::Vector3d o = written.scans[1].T_world_scanner().translation();
+  const Eigen::Vector3d o = written[1].translation();
   Pose turn = Pose::Identity();
   turn.linear() = Eigen::AngleAxisd(1e-4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   turn.translation() = o - turn.linear() * o;

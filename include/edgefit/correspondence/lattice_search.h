@@ -41,6 +41,9 @@ class LatticeSearch {
   // options.max_distance; ignores use_lattice.
   void Find(const std::vector<Eigen::Vector3f>& q_world, const CorrespondenceOptions& options,
             std::vector<Correspondence>* out);
+  // The same within scan `only_scan` alone (-1: every scan, as Find).
+  void FindIn(int only_scan, const std::vector<Eigen::Vector3f>& q_world,
+              const CorrespondenceOptions& options, std::vector<Correspondence>* out);
 
   // One query: its nearest cell within `window`, gated by max_d2 = squared
   // max_distance [m^2] (scan = -1 beyond; source left 0). Thread-safe.
