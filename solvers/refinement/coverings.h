@@ -75,8 +75,6 @@ struct CoveringOptions {
   bool IsValid(std::string* error) const;
 };
 
-// Per scan, per cell: 1 where a covering was found.
-using CellMask = std::vector<std::vector<uint8_t>>;
 
 struct CoveringSummary {
   size_t matched = 0;  // cells matched to a CAD sample

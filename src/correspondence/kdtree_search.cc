@@ -16,13 +16,20 @@ struct KdTreeSearch::Tree {
   PointKdTree index;  // built in its constructor
 };
 
-KdTreeSearch::KdTreeSearch(const ScanSet* scans, const CellWeights* weights)
-    : scans_(scans), weights_(weights) {
+KdTreeSearch::KdTreeSearch(const ScanSet* scans, const CellWeights* weights,
+                           const CellMask* excluded)
+    : scans_(scans), weights_(weights), excluded_(excluded) {
   CHECK(scans_ != nullptr);
   if (weights_ != nullptr) {
     CHECK_EQ(weights_->size(), scans_->scans.size());
     for (size_t s = 0; s < scans_->scans.size(); ++s) {
       CHECK_EQ((*weights_)[s].size(), scans_->scans[s].size());
+    }
+  }
+  if (excluded_ != nullptr) {
+    CHECK_EQ(excluded_->size(), scans_->scans.size());
+    for (size_t s = 0; s < scans_->scans.size(); ++s) {
+      CHECK_EQ((*excluded_)[s].size(), scans_->scans[s].size());
     }
   }
 }
@@ -82,9 +89,7 @@ void KdTreeSearch::Find(const std::vector<Eigen::Vector3f>& q_world,
     // Recomputed rather than sqrt(d2) so both searches report the same value
     // for the same pair.
     b.distance = (points_world_[index] - q_world[i]).norm();
-    b.weight = weights_ != nullptr
-                   ? (*weights_)[static_cast<size_t>(b.scan)][static_cast<size_t>(b.cell)]
-                   : 1.f;
+    b.weight = CellWeight(weights_, excluded_, b.scan, b.cell);
   }
   for (const Correspondence& b : best_) {
     if (b.scan >= 0) out->push_back(b);

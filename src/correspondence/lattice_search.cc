@@ -8,11 +8,13 @@
 
 namespace edgefit {
 
-LatticeSearch::LatticeSearch(const ScanSet* scans, const CellWeights* weights)
-    : scans_(scans), weights_(weights) {
+LatticeSearch::LatticeSearch(const ScanSet* scans, const CellWeights* weights,
+                             const CellMask* excluded)
+    : scans_(scans), weights_(weights), excluded_(excluded) {
   CHECK(scans_ != nullptr);
   const size_t n = scans_->scans.size();
   if (weights_ != nullptr) CHECK_EQ(weights_->size(), n);
+  if (excluded_ != nullptr) CHECK_EQ(excluded_->size(), n);
   T_scanner_world_.resize(n);
   searchable_.resize(n);
   for (size_t s = 0; s < n; ++s) {
@@ -21,6 +23,7 @@ LatticeSearch::LatticeSearch(const ScanSet* scans, const CellWeights* weights)
     searchable_[s] = scan.organized() && scan.lattice().valid() &&
                      scan.lattice().rows() == scan.rows() && scan.lattice().cols() == scan.cols();
     if (weights_ != nullptr) CHECK_EQ((*weights_)[s].size(), scan.size());
+    if (excluded_ != nullptr) CHECK_EQ((*excluded_)[s].size(), scan.size());
   }
 }
 
@@ -71,9 +74,7 @@ Correspondence LatticeSearch::NearestIn(int only_scan, const Eigen::Vector3f& q_
   b.scan = best_d2 <= max_d2 ? best_scan : -1;
   b.cell = best_cell;
   b.distance = std::sqrt(best_d2);
-  b.weight = (b.scan >= 0 && weights_ != nullptr)
-                 ? (*weights_)[static_cast<size_t>(best_scan)][static_cast<size_t>(best_cell)]
-                 : 1.f;
+  b.weight = CellWeight(weights_, excluded_, b.scan, b.cell);
   return b;
 }
 

@@ -31,9 +31,9 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   const ChainRefinementOptions& refinement = options.refinement.chain;
   if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
   const std::vector<SurfaceSamples>& chain_samples = cad.chain;
-  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples,
-                                      refinement, options.residuals, &result->T_world_base,
-                                      &result->q, &result->chain_refinement));
+  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples, refinement,
+                                      options.residuals, &result->T_world_base, &result->q,
+                                      &result->chain_refinement));
 
   // Coverings (jackets, covers) found at the estimate and left out, then
   // the chain refined again without them.
@@ -42,24 +42,16 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
     EDGEFIT_RETURN_IF_ERROR(FindCoverings(
         model, scans, search, chain_samples, result->T_world_base, result->q, coverings,
         refinement.icp.correspondence.use_lattice, covered, &result->coverings));
-    CellWeights masked(scans.scans.size());
-    for (size_t s = 0; s < scans.scans.size(); ++s) {
-      masked[s] =
-          weights != nullptr ? (*weights)[s] : std::vector<float>(scans.scans[s].size(), 1.f);
-      for (size_t i = 0; i < masked[s].size(); ++i) {
-        if ((*covered)[s][i]) masked[s][i] = 0.f;
-      }
-    }
     char line[200];
     std::snprintf(line, sizeof(line),
                   "chain: %zu of %zu matched points lie off the CAD surface over an area "
                   "(jackets, covers): refining without them",
                   result->coverings.covered, result->coverings.matched);
     say(line);
-    CorrespondenceSearch masked_search(&scans, &masked);
-    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples,
-                                        refinement, options.residuals, &result->T_world_base,
-                                        &result->q, &result->chain_refinement));
+    CorrespondenceSearch masked_search(&scans, weights, covered);
+    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples, refinement,
+                                        options.residuals, &result->T_world_base, &result->q,
+                                        &result->chain_refinement));
   }
   result->timings.refine = Since(start);
   if (refinement.refine) {

@@ -19,8 +19,9 @@ namespace edgefit {
 class CorrespondenceSearch {
  public:
   // Borrowed; see LatticeSearch / KdTreeSearch.
-  CorrespondenceSearch(const ScanSet* scans, const CellWeights* weights)
-      : lattice_(scans, weights), kdtree_(scans, weights) {}
+  CorrespondenceSearch(const ScanSet* scans, const CellWeights* weights,
+                       const CellMask* excluded = nullptr)
+      : lattice_(scans, weights, excluded), kdtree_(scans, weights, excluded) {}
 
   // Matches of q_world (world frame [m]) ordered by source index. crop_world
   // bounds the kd-tree (ignored by the lattice search, which needs no crop).

@@ -12,6 +12,7 @@
 #ifndef EDGEFIT_CORRESPONDENCE_CORRESPONDENCES_H_
 #define EDGEFIT_CORRESPONDENCE_CORRESPONDENCES_H_
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,17 @@ struct CorrespondenceOptions {
 // Optional per-scan, per-cell target weights w_edge (cell index order), as
 // the edge detector writes them; nullptr means weight 1 everywhere.
 using CellWeights = std::vector<std::vector<float>>;
+// Per scan, per cell: 1 marks a cell (e.g. a covering's, left out).
+using CellMask = std::vector<std::vector<uint8_t>>;
+
+// The weight a match to (scan, cell) carries: 0 when `excluded` marks the
+// cell, else its weight (1 without weights); 1 for no match (scan < 0).
+inline float CellWeight(const CellWeights* weights, const CellMask* excluded, int scan, int cell) {
+  if (scan < 0) return 1.f;
+  const size_t s = static_cast<size_t>(scan), c = static_cast<size_t>(cell);
+  if (excluded != nullptr && (*excluded)[s][c] != 0) return 0.f;
+  return weights != nullptr ? (*weights)[s][c] : 1.f;
+}
 
 }  // namespace edgefit
 

@@ -22,9 +22,11 @@ namespace edgefit {
 
 class KdTreeSearch {
  public:
-  // `scans` and `weights` (nullptr: weight 1) are borrowed and must outlive
-  // the searcher.
-  KdTreeSearch(const ScanSet* scans, const CellWeights* weights);
+  // `scans`, `weights` (nullptr: weight 1) and `excluded` (nullptr: none;
+  // a marked cell matches with weight 0) are borrowed and must outlive the
+  // searcher.
+  KdTreeSearch(const ScanSet* scans, const CellWeights* weights,
+               const CellMask* excluded = nullptr);
   ~KdTreeSearch();
   KdTreeSearch(const KdTreeSearch&) = delete;
   KdTreeSearch& operator=(const KdTreeSearch&) = delete;
@@ -45,6 +47,7 @@ class KdTreeSearch {
   struct Tree;
   const ScanSet* scans_;
   const CellWeights* weights_;
+  const CellMask* excluded_;
   Eigen::AlignedBox3d crop_world_;
   bool built_ = false;
   std::vector<Eigen::Vector3f> points_world_;  // valid points inside the crop

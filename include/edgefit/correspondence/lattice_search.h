@@ -32,9 +32,11 @@ namespace edgefit {
 
 class LatticeSearch {
  public:
-  // `scans` and `weights` (nullptr: weight 1) are borrowed and must outlive
-  // the searcher; weights[s] must have scans[s].size() entries.
-  LatticeSearch(const ScanSet* scans, const CellWeights* weights);
+  // `scans`, `weights` (nullptr: weight 1) and `excluded` (nullptr: none;
+  // a marked cell matches with weight 0) are borrowed and must outlive the
+  // searcher; weights[s] and excluded[s] must have scans[s].size() entries.
+  LatticeSearch(const ScanSet* scans, const CellWeights* weights,
+                const CellMask* excluded = nullptr);
 
   // Replaces *out with the gated matches of q_world, ordered by source index
   // (deterministic for any thread count). Uses options.window and
@@ -55,9 +57,10 @@ class LatticeSearch {
  private:
   const ScanSet* scans_;
   const CellWeights* weights_;
+  const CellMask* excluded_;
   std::vector<Eigen::Matrix<double, 3, 4>> T_scanner_world_;  // per scan, [R | t]
-  std::vector<bool> searchable_;                               // per scan
-  std::vector<Correspondence> best_;  // per query; kept between calls (ICP)
+  std::vector<bool> searchable_;                              // per scan
+  std::vector<Correspondence> best_;                          // per query; kept between calls (ICP)
 };
 
 }  // namespace edgefit
