@@ -59,7 +59,8 @@ Status LoadModels(const std::string& path, std::vector<LoadedModel>* models) {
     const json& e = j["models"][m];
     LoadedModel& l = loaded[m];
     auto text_of = [&e](const char* key) {
-      return e.is_object() && e.contains(key) && e[key].is_string() ? e[key].get<std::string>() : "";
+      return e.is_object() && e.contains(key) && e[key].is_string() ? e[key].get<std::string>()
+                                                                    : "";
     };
     l.name = text_of("name").empty() ? "model_" + std::to_string(m + 1) : text_of("name");
     const std::string where = path + ": model '" + l.name + "'";
@@ -67,9 +68,11 @@ Status LoadModels(const std::string& path, std::vector<LoadedModel>* models) {
     if (l.urdf.empty()) return Status::Error(where + ": no \"urdf\"");
     EDGEFIT_RETURN_IF_ERROR(ParseAttachSpecList(text_of("attach"), &l.specs).WithContext(where));
     for (AttachSpec& spec : l.specs) spec.path = PathRelativeToFile(path, spec.path);
-    EDGEFIT_RETURN_IF_ERROR(LoadModelWithAttachments(l.urdf, l.specs, ModelLoadOptions(), &l.model));
     EDGEFIT_RETURN_IF_ERROR(
-        ChooseAssetKind(text_of("kind").empty() ? "auto" : text_of("kind"), l.model, &l.kind).WithContext(where));
+        LoadModelWithAttachments(l.urdf, l.specs, ModelLoadOptions(), &l.model));
+    EDGEFIT_RETURN_IF_ERROR(
+        ChooseAssetKind(text_of("kind").empty() ? "auto" : text_of("kind"), l.model, &l.kind)
+            .WithContext(where));
     const json count = e.is_object() && e.contains("count") ? e["count"] : json("every");
     if (count.is_string() && count.get<std::string>() == "every") {
       l.count = 0;
@@ -90,10 +93,13 @@ int MatchTruth(const std::vector<CellTruthAsset>& truth, const std::vector<bool>
   int best = -1;
   double best_distance = 0.5;
   for (size_t a = 0; a < truth.size(); ++a) {
-    const double d = (truth[a].truth.T_world_base.translation() - T_world_base.translation()).norm();
+    const double d =
+        (truth[a].truth.T_world_base.translation() - T_world_base.translation()).norm();
     bool same_joints = !truth[a].truth.joints.empty();
-    for (const auto& [name, value] : truth[a].truth.joints) same_joints = same_joints && model.JointIndex(name) >= 0;
-    if (!taken[a] && same_joints && d < best_distance) best = static_cast<int>(a), best_distance = d;
+    for (const auto& [name, value] : truth[a].truth.joints)
+      same_joints = same_joints && model.JointIndex(name) >= 0;
+    if (!taken[a] && same_joints && d < best_distance)
+      best = static_cast<int>(a), best_distance = d;
   }
   return best;
 }
@@ -102,8 +108,12 @@ int RunCell(const Command& command) {
   if (FLAGS_models.empty()) return BadInput(command, "--models is required");
   if (FLAGS_scan.empty()) return BadInput(command, "--scan is required");
   if (FLAGS_out.empty()) return BadInput(command, "--out is required");
-  if (!(FLAGS_background_distance_mm > 0.0)) return BadInput(command, "--background_distance_mm must be > 0");
+  if (!(FLAGS_background_distance_mm > 0.0))
+    return BadInput(command, "--background_distance_mm must be > 0");
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());
+  CellOptions options;
+  bool has_roi = false;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, RoiFromFlags(&options.roi_world, &has_roi));
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   const auto start = std::chrono::steady_clock::now();
 
@@ -123,10 +133,11 @@ int RunCell(const Command& command) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
   }
   std::vector<CellTruthAsset> truth;
-  if (!FLAGS_truth.empty()) EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));
-  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!FLAGS_truth.empty())
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  CellOptions options;
   options.removal.distance = FLAGS_background_distance_mm * 1e-3;
   CellResult cell;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitCell(models, options, &Progress, &scans, &cell));
@@ -144,16 +155,17 @@ int RunCell(const Command& command) {
   for (size_t m = 0; m < loaded.size(); ++m) {
     const CellModelOutcome& o = cell.models[m];
     all_counts = all_counts && o.count_met;
-    out["models"].push_back({{"name", loaded[m].name},
-                             {"urdf", loaded[m].urdf},
-                             {"count", loaded[m].count == 0 ? json("every") : json(loaded[m].count)},
-                             {"found", o.found},
-                             {"count_met", o.count_met},
-                             {"stopped", o.stopped}});
+    out["models"].push_back(
+        {{"name", loaded[m].name},
+         {"urdf", loaded[m].urdf},
+         {"count", loaded[m].count == 0 ? json("every") : json(loaded[m].count)},
+         {"found", o.found},
+         {"count_met", o.count_met},
+         {"stopped", o.stopped}});
     if (o.rejected) {
       out["models"].back()["rejected_fit_base_xyz"] = {o.T_world_base_rejected.translation().x(),
-                                                        o.T_world_base_rejected.translation().y(),
-                                                        o.T_world_base_rejected.translation().z()};
+                                                       o.T_world_base_rejected.translation().y(),
+                                                       o.T_world_base_rejected.translation().z()};
     }
   }
   std::vector<bool> taken(truth.size(), false);
@@ -162,34 +174,45 @@ int RunCell(const Command& command) {
   for (const CellInstance& instance : cell.instances) {
     const LoadedModel& l = loaded[static_cast<size_t>(instance.model)];
     const std::string id = l.name + "_" + std::to_string(instance.index);
-    json result = FitResultJson(l.model, l.kind, models[static_cast<size_t>(instance.model)].options, instance.fit);
-    json summary = {{"id", id}, {"model", l.name}, {"ok", instance.fit.ok}, {"message", instance.fit.message},
-                    {"removed_points", instance.removed_points}, {"base", result["base"]}};
-    const int match = truth.empty() ? -1 : MatchTruth(truth, taken, l.model, instance.fit.T_world_base);
+    json result = FitResultJson(l.model, l.kind,
+                                models[static_cast<size_t>(instance.model)].options, instance.fit);
+    json summary = {{"id", id},
+                    {"model", l.name},
+                    {"ok", instance.fit.ok},
+                    {"message", instance.fit.message},
+                    {"removed_points", instance.removed_points},
+                    {"base", result["base"]}};
+    const int match =
+        truth.empty() ? -1 : MatchTruth(truth, taken, l.model, instance.fit.T_world_base);
     std::string scored = truth.empty() ? "" : "  (no truth asset within 0.5 m)";
     if (match >= 0) {
       taken[static_cast<size_t>(match)] = true;
       const Truth& t = truth[static_cast<size_t>(match)].truth;
       FitErrors errors;
-      const Status status = CompareWithTruth(l.model, instance.fit.q, instance.fit.T_world_base, t.joints,
-                                             t.T_world_base, SurveyFrame(t.T_world_scanners, t.sensor.T_world_scanners_written),
-                                             &errors, instance.fit.base_symmetry);
+      const Status status = CompareWithTruth(
+          l.model, instance.fit.q, instance.fit.T_world_base, t.joints, t.T_world_base,
+          SurveyFrame(t.T_world_scanners, t.sensor.T_world_scanners_written), &errors,
+          instance.fit.base_symmetry);
       if (!status.ok()) return fail(status.WithContext(FLAGS_truth));
       MarkUnobservableJoints(instance.fit.bodies, &errors);
       double worst = 0.0;
       json e = json::object();
       for (const JointError& j : errors.joints) {
         e[j.name] = j.error;
-        if (!j.prismatic && j.independent && !j.unobservable) worst = std::max(worst, std::abs(j.error));
+        if (!j.prismatic && j.independent && !j.unobservable)
+          worst = std::max(worst, std::abs(j.error));
       }
-      result["errors"] = {{"truth_asset", truth[static_cast<size_t>(match)].name}, {"joints", e},
-                          {"base_translation_m", errors.base_translation}, {"base_rotation_rad", errors.base_rotation}};
+      result["errors"] = {{"truth_asset", truth[static_cast<size_t>(match)].name},
+                          {"joints", e},
+                          {"base_translation_m", errors.base_translation},
+                          {"base_rotation_rad", errors.base_rotation}};
       summary["truth_asset"] = truth[static_cast<size_t>(match)].name;
       summary["worst_revolute_error_deg"] = worst * 180.0 / M_PI;
       summary["base_error_mm"] = errors.base_translation * 1e3;
       char line[160];
       std::snprintf(line, sizeof(line), "  = %s: base %.2f mm, worst revolute joint %.4f deg",
-                    truth[static_cast<size_t>(match)].name.c_str(), errors.base_translation * 1e3, worst * 180.0 / M_PI);
+                    truth[static_cast<size_t>(match)].name.c_str(), errors.base_translation * 1e3,
+                    worst * 180.0 / M_PI);
       scored = line;
     }
     if (!FLAGS_out_dir.empty()) {
@@ -203,8 +226,9 @@ int RunCell(const Command& command) {
     }
     out["instances"].push_back(summary);
     const Eigen::Vector3d xyz = instance.fit.T_world_base.translation();
-    std::printf("  %-16s base %.3f %.3f %.3f m, yaw %.2f deg, %zu points%s\n", id.c_str(), xyz.x(), xyz.y(),
-                xyz.z(), RpyFromRotation(instance.fit.T_world_base.linear()).z() * 180.0 / M_PI,
+    std::printf("  %-16s base %.3f %.3f %.3f m, yaw %.2f deg, %zu points%s\n", id.c_str(), xyz.x(),
+                xyz.y(), xyz.z(),
+                RpyFromRotation(instance.fit.T_world_base.linear()).z() * 180.0 / M_PI,
                 instance.removed_points, scored.c_str());
     if (!instance.fit.ok) std::printf("    quality NOT OK: %s\n", instance.fit.message.c_str());
   }
@@ -219,11 +243,14 @@ int RunCell(const Command& command) {
     const CellModelOutcome& o = cell.models[m];
     // The first reason only (all of them in the result's "stopped").
     const size_t cut = o.stopped.find("; ");
-    const std::string reason = cut == std::string::npos ? o.stopped : o.stopped.substr(0, cut) + "; ...";
+    const std::string reason =
+        cut == std::string::npos ? o.stopped : o.stopped.substr(0, cut) + "; ...";
     std::printf("  %s: %d found%s%s\n", loaded[m].name.c_str(), o.found,
-                o.count_met ? "" : " (fewer than asked)", reason.empty() ? "" : ("; stopped: " + reason).c_str());
+                o.count_met ? "" : " (fewer than asked)",
+                reason.empty() ? "" : ("; stopped: " + reason).c_str());
   }
-  out["background"] = {{"points", cell.background_points}, {"removed_points", cell.points - cell.background_points},
+  out["background"] = {{"points", cell.background_points},
+                       {"removed_points", cell.points - cell.background_points},
                        {"distance_m", options.removal.distance}};
   if (!FLAGS_out_background.empty()) {
     const Status status = WriteScans(FLAGS_out_background, scans, WriteOptions());
@@ -231,9 +258,17 @@ int RunCell(const Command& command) {
     written.push_back(FLAGS_out_background);
     out["background"]["file"] = FLAGS_out_background;
   }
+  if (has_roi) {
+    const Eigen::AlignedBox3d& box = options.roi_world;
+    out["roi"] = {{"min", {box.min().x(), box.min().y(), box.min().z()}},
+                  {"max", {box.max().x(), box.max().y(), box.max().z()}},
+                  {"points", cell.roi_points}};
+  }
   out["ok"] = all_counts;
-  out["timing_s"] = {{"load", load_seconds}, {"fit", cell.seconds},
-                     {"total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+  out["timing_s"] = {
+      {"load", load_seconds},
+      {"fit", cell.seconds},
+      {"total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
   const Status status = WriteStringAtomically(FLAGS_out, out.dump(2) + "\n");
   if (!status.ok()) return fail(status);
   std::printf("background: %zu of %zu points kept; cell %s\n", cell.background_points, cell.points,
@@ -244,21 +279,47 @@ int RunCell(const Command& command) {
 }  // namespace
 
 Command CellCommand() {
-  return {"cell",
-          "every instance of several models in the scans of a cell, each fitted and removed",
-          "Usage:\n"
-          "  edgefit cell --models=M.json --scan=F[,F...] --out=cell.json [--out_dir=D]\n"
-          "               [--out_background=B.e57] [--background_distance_mm=8] [--truth=cell_truth.json]\n"
-          "               [fit flags: --weighting, --loss, ...] [--threads=N] [--seed=N]\n"
-          "Example:\n"
-          "  edgefit scan --scene=examples/cell/cell.json --scanners=4 --out=cell.e57 --truth=cell_truth.json\n"
-          "  edgefit cell --models=examples/cell/models.json --scan=cell.e57 --truth=cell_truth.json \\\n"
-          "    --out=cell_result.json --out_background=cell_rest.e57",
-          {"models", "scan", "out", "out_dir", "out_background", "background_distance_mm", "truth", "weighting", "w_high",
-           "loss", "loss_scale_mm", "lambda", "parameterization", "refine_chain", "align_stations", "station_rounds",
-           "station_max_covered_share", "covering_rounds", "remove_mixed_pixels", "mixed_pixel_tolerance_mm",
-           "mixed_pixel_lines", "mixed_pixel_neighbour_lines", "threads", "seed"},
-          &RunCell};
+  return {
+      "cell",
+      "every instance of several models in the scans of a cell, each fitted and removed",
+      "Usage:\n"
+      "  edgefit cell --models=M.json --scan=F[,F...] --out=cell.json [--out_dir=D]\n"
+      "               [--out_background=B.e57] [--background_distance_mm=8] "
+      "[--truth=cell_truth.json]\n"
+      "               [--roi=xmin,ymin,zmin,xmax,ymax,zmax] [fit flags: --weighting, --loss, ...]\n"
+      "               [--threads=N] [--seed=N]\n"
+      "Example:\n"
+      "  edgefit scan --scene=examples/cell/cell.json --scanners=4 --out=cell.e57 "
+      "--truth=cell_truth.json\n"
+      "  edgefit cell --models=examples/cell/models.json --scan=cell.e57 "
+      "--truth=cell_truth.json \\\n"
+      "    --out=cell_result.json --out_background=cell_rest.e57",
+      {"models",
+       "scan",
+       "out",
+       "out_dir",
+       "out_background",
+       "background_distance_mm",
+       "truth",
+       "roi",
+       "weighting",
+       "w_high",
+       "loss",
+       "loss_scale_mm",
+       "lambda",
+       "parameterization",
+       "refine_chain",
+       "align_stations",
+       "station_rounds",
+       "station_max_covered_share",
+       "covering_rounds",
+       "remove_mixed_pixels",
+       "mixed_pixel_tolerance_mm",
+       "mixed_pixel_lines",
+       "mixed_pixel_neighbour_lines",
+       "threads",
+       "seed"},
+      &RunCell};
 }
 
 }  // namespace edgefit::tools

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "edgefit/pipeline/instance_crop.h"
 #include "edgefit/scan/mixed_pixels.h"
 
 namespace edgefit {
@@ -34,11 +35,25 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
     *scans = WithoutMixedPixels(*scans, first.mixed_pixels, &result->mixed_pixels);
     say("cell: " + std::to_string(result->mixed_pixels) + " mixed pixels removed");
   }
+  // The points instances are looked for in: the region's, or every one.
+  const bool has_roi = !options.roi_world.isEmpty();
+  ScanSet in_roi;
+  if (has_roi) {
+    in_roi = CropToBox(*scans, options.roi_world);
+    result->roi_points = in_roi.TotalValid();
+    if (result->roi_points == 0) {
+      return Status::Error("the region of interest holds none of the " +
+                           std::to_string(result->points) + " scan points");
+    }
+    say("cell: " + std::to_string(result->roi_points) + " of " + std::to_string(result->points) +
+        " points in the region");
+  }
+  ScanSet* searched = has_roi ? &in_roi : scans;
   EdgeDetectionResult edges;  // Sec. 4, once for the cell, when a model's weighting uses it
   if (std::any_of(models.begin(), models.end(),
                   [](const CellModel& m) { return !m.options.uniform_weights; })) {
-    say("cell: edges on " + std::to_string(scans->TotalValid()) + " points");
-    EDGEFIT_RETURN_IF_ERROR(DetectEdges(*scans, first.edges, &edges));
+    say("cell: edges on " + std::to_string(searched->TotalValid()) + " points");
+    EDGEFIT_RETURN_IF_ERROR(DetectEdges(*searched, first.edges, &edges));
   }
   result->edge_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -49,7 +64,8 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
     const int wanted = cell_model.count > 0 ? cell_model.count : options.max_instances;
     while (outcome.found < wanted) {
       const std::string label = cell_model.name + " " + std::to_string(outcome.found + 1);
-      say("cell: looking for " + label + " in " + std::to_string(scans->TotalValid()) + " points");
+      say("cell: looking for " + label + " in " + std::to_string(searched->TotalValid()) +
+          " points");
       FitOptions fit_options = cell_model.options;
       fit_options.crop.enabled = true;
       fit_options.min_base_inlier_share = 0.5 * fit_options.quality.min_inlier_share;
@@ -57,7 +73,7 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
       instance.model = static_cast<int>(m);
       instance.index = outcome.found + 1;
       EDGEFIT_RETURN_IF_ERROR(FitWithEdges(
-          *cell_model.model, *scans, edges, fit_options,
+          *cell_model.model, *searched, edges, fit_options,
           [&](const std::string& line) { say(label + ": " + line); }, &instance.fit));
       if (!IsInstance(instance.fit)) {
         outcome.stopped = instance.fit.message;
@@ -72,6 +88,7 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
                                                  instance.fit.T_world_base, options.attached,
                                                  &marks));
       instance.removed_points = RemoveMarkedPoints(marks, scans);
+      if (has_roi) RemoveMarkedPoints(marks, &in_roi);
       say("cell: " + label + " found; " + std::to_string(instance.removed_points) +
           " points removed");
       result->instances.push_back(std::move(instance));

@@ -27,10 +27,22 @@ struct Attempt {
   bool base_mismatch = false;  // FitOptions::min_base_inlier_share: the chain was not fitted
 };
 
-// Options, a root link, and a model in metres.
-Status CheckFitInputs(const KinematicModel& model, const FitOptions& options) {
+// Options, a root link, a model in metres, and scans on their lattices.
+Status CheckFitInputs(const KinematicModel& model, const ScanSet& scans,
+                      const FitOptions& options) {
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("robot fit: " + error);
+  for (size_t s = 0; s < scans.scans.size(); ++s) {
+    const OrganizedScan& scan = scans.scans[s];
+    if (!scan.organized() || !scan.lattice().valid() || scan.lattice().rows() != scan.rows() ||
+        scan.lattice().cols() != scan.cols()) {
+      return Status::Error(
+          "scan " + std::to_string(s) +
+          (s < scans.sources.size() ? " (" + scans.sources[s] + ")" : std::string()) +
+          ": the fit needs an organized scan on its angular lattice (PTX, E57 with row and "
+          "column indices, organized PCD), not a point list");
+    }
+  }
   if (model.root_link() < 0) return Status::Error("robot fit: the model has no root link");
   const Eigen::Vector3d extent = model.BoundingBox(model.ZeroJoints(), Pose::Identity()).sizes();
   if (!(extent.maxCoeff() <= options.samples.max_model_extent)) {
@@ -50,7 +62,7 @@ Status CheckFitInputs(const KinematicModel& model, const FitOptions& options) {
 Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitOptions& options,
            const ProgressFn& progress, FitResult* result) {
   CHECK(result != nullptr);
-  EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, options));  // before the edges' seconds
+  EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, written_scans, options));  // before any work
   const auto start = std::chrono::steady_clock::now();
   // Extension: mixed pixels off the scans.
   ScanSet without_mixed;
@@ -83,7 +95,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   auto say = [&progress](const std::string& line) {
     if (progress) progress(line);
   };
-  EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, options));
+  EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, scans, options));
   if (!options.uniform_weights && edges.w_edge.size() != scans.scans.size()) {
     return Status::Error("robot fit: edge weighting needs the scans' edges (Sec. 4)");
   }

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <charconv>
 #include <cstdio>
+#include <fstream>
 #include <string>
+#include <utility>
 
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
@@ -22,14 +25,14 @@ using testing::TempPath;
 
 constexpr double kDeg = M_PI / 180.0;
 
-
 TEST(PtxTest, RoundTripTwoScansWithColour) {
   ScanSet original;
   for (uint32_t seed : {1u, 2u}) {
     SyntheticScanOptions o = testing::SmallScanOptions(seed);
     o.color = true;
     if (seed == 2) {
-      o.R_scanner_lattice = Eigen::AngleAxisd(2 * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
+      o.R_scanner_lattice =
+          Eigen::AngleAxisd(2 * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
       o.T_world_scanner = PoseFromXyYaw(2.0, 1.0, -2.5);
     }
     original.scans.push_back(MakeSyntheticScan(testing::RoomScene(), o));
@@ -102,12 +105,14 @@ TEST(PtxTest, ToleratesCrLfTabsAndBareZeroMisses) {
 // Writes `scan` as PTX text with the header sizes in either order and the
 // cells column by column or row by row.
 std::string PtxText(const OrganizedScan& scan, bool header_rows_first, bool row_major) {
-  std::string t = header_rows_first ? std::to_string(scan.rows()) + "\n" + std::to_string(scan.cols()) + "\n"
-                                    : std::to_string(scan.cols()) + "\n" + std::to_string(scan.rows()) + "\n";
+  std::string t = header_rows_first
+                      ? std::to_string(scan.rows()) + "\n" + std::to_string(scan.cols()) + "\n"
+                      : std::to_string(scan.cols()) + "\n" + std::to_string(scan.rows()) + "\n";
   t += "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
   char buf[32];
   auto add = [&](float v) { t.append(buf, std::to_chars(buf, buf + 32, v).ptr); };
-  const int outer = row_major ? scan.rows() : scan.cols(), inner = row_major ? scan.cols() : scan.rows();
+  const int outer = row_major ? scan.rows() : scan.cols(),
+            inner = row_major ? scan.cols() : scan.rows();
   for (int o = 0; o < outer; ++o) {
     for (int k = 0; k < inner; ++k) {
       const size_t i = row_major ? scan.Index(o, k) : scan.Index(k, o);
@@ -116,7 +121,14 @@ std::string PtxText(const OrganizedScan& scan, bool header_rows_first, bool row_
         continue;
       }
       const Eigen::Vector3f& p = scan.point_scanner(i);
-      add(p.x()); t += ' '; add(p.y()); t += ' '; add(p.z()); t += ' '; add(scan.intensity(i)); t += '\n';
+      add(p.x());
+      t += ' ';
+      add(p.y());
+      t += ' ';
+      add(p.z());
+      t += ' ';
+      add(scan.intensity(i));
+      t += '\n';
     }
   }
   return t;
@@ -141,8 +153,9 @@ TEST_P(PtxLayoutTest, DetectsLayoutFromData) {
     }
     const OrganizedScan truth = MakeSyntheticScan(testing::RoomScene(), o);
     ScanSet set;
-    const Status status = ParsePtx(PtxText(truth, GetParam().header_rows_first, GetParam().row_major),
-                                   "layout.ptx", ReadOptions(), &set);
+    const Status status =
+        ParsePtx(PtxText(truth, GetParam().header_rows_first, GetParam().row_major), "layout.ptx",
+                 ReadOptions(), &set);
     ASSERT_TRUE(status.ok()) << status.message();
     const OrganizedScan& scan = set.scans[0];
     EXPECT_EQ(scan.file_order(), GetParam().row_major ? OrganizedScan::FileOrder::kRowMajor
@@ -167,7 +180,9 @@ INSTANTIATE_TEST_SUITE_P(FourLayouts, PtxLayoutTest,
                                            LayoutCase{"RowsColumnsColumnMajor", true, false},
                                            LayoutCase{"ColumnsRowsRowMajor", false, true},
                                            LayoutCase{"RowsColumnsRowMajor", true, true}),
-                         [](const ::testing::TestParamInfo<LayoutCase>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<LayoutCase>& info) {
+                           return info.param.name;
+                         });
 
 TEST(PtxTest, LoadedScanFitsMemoryBudget) {
   for (bool color : {false, true}) {
@@ -196,6 +211,47 @@ TEST(PtxTest, WritePtxRefusesUnorganizedScans) {
   EXPECT_NE(status.message().find("organized"), std::string::npos);
   std::string content;
   EXPECT_FALSE(ReadFileToString(path, &content).ok()) << "no file may be left behind";
+}
+
+// PDAL's PTX reader test files (../shared/data/scans/ptx; skipped without
+// it): the scan with colour is read on its 71 x 15 grid, point for point;
+// the others are no scanner's grids (1 to 15 points a scan, too few for a
+// lattice) or carry a scaled matrix, and are refused with their reason.
+TEST(PtxTest, PdalFiles) {
+  const std::string dir = std::string(EDGEFIT_SHARED_DIR) + "/data/scans/ptx/";
+  if (!std::ifstream(dir + "pdal_1.2-with-color.ptx").good()) {
+    GTEST_SKIP() << "no " << dir << " (../shared absent)";
+  }
+  ScanSet scans;
+  ASSERT_TRUE(ReadScans(dir + "pdal_1.2-with-color.ptx", ReadOptions(), &scans).ok());
+  ASSERT_EQ(scans.scans.size(), 1u);
+  const OrganizedScan& scan = scans.scans[0];
+  EXPECT_EQ(scan.rows(), 71);
+  EXPECT_EQ(scan.cols(), 15);
+  EXPECT_EQ(scan.CountValid(), 1065u);
+  ASSERT_TRUE(scan.has_color());
+  // The file's first point: 637012.24 849028.31 431.66 0.034912 68 77 88,
+  // identity pose (georeferenced: float keeps it to about 6 cm).
+  bool found = false;
+  for (size_t i = 0; i < scan.size() && !found; ++i) {
+    const Eigen::Vector3d p = scan.PointWorld(i);
+    found = (p - Eigen::Vector3d(637012.24, 849028.31, 431.66)).norm() < 0.1 &&
+            scan.color(i) == std::array<uint8_t, 3>{68, 77, 88} &&
+            std::abs(scan.intensity(i) - 0.034912f) < 1e-6f;
+  }
+  EXPECT_TRUE(found);
+
+  const std::pair<const char*, const char*> refused[] = {
+      {"pdal_no-color.ptx", "too few valid points to estimate the lattice"},
+      {"pdal_complex-transform.ptx", "too few valid points to estimate the lattice"},
+      {"pdal_multiple-and-transform.ptx", "not a rigid transform"}};
+  for (const auto& [file, reason] : refused) {
+    ScanSet other;
+    const Status status = ReadScans(dir + file, ReadOptions(), &other);
+    ASSERT_FALSE(status.ok()) << file;
+    EXPECT_NE(status.message().find(file), std::string::npos) << status.message();
+    EXPECT_NE(status.message().find(reason), std::string::npos) << status.message();
+  }
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ namespace {
 const std::string kAssets = std::string(EDGEFIT_SOURCE_DIR) + "/assets/";
 
 struct BadFile {
-  const char* name;      // the test case, and the file's name before its extension
+  const char* name;       // the test case, and the file's name before its extension
   const char* extension;  // "urdf": the model is bad; else the scan
   std::string content;
   std::string expected;  // in the one stderr line, beside the file's path
@@ -45,8 +45,8 @@ std::vector<BadFile> Cases() {
       "3\n3\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
   std::string ptx_points;
   for (int i = 0; i < 9; ++i) {
-    ptx_points += "1 " + std::to_string(0.1 * (i / 3)) + " " + std::to_string(0.1 * (i % 3)) +
-                  " 0.5\n";
+    ptx_points +=
+        "1 " + std::to_string(0.1 * (i / 3)) + " " + std::to_string(0.1 * (i % 3)) + " 0.5\n";
   }
   const std::string pcd_header =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\n"
@@ -70,8 +70,8 @@ std::vector<BadFile> Cases() {
       {"PtxWordForNumber", "ptx", ptx_header + "1 0 zero 0.5\n" + ptx_points.substr(8),
        "line 11: expected 4 numbers"},
       {"PtxUnitsAfterNumbers", "ptx", "3\n3\n0 0 0 m\n", "line 3"},
-      {"PtxNotRigid", "ptx", "3\n3\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",
-       "not a rigid"},
+      {"PtxNotRigid", "ptx",
+       "3\n3\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", "not a rigid"},
       {"PcdWrongCount", "pcd",
        "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 2\nHEIGHT 1\nPOINTS 3\nDATA ascii\n",
        "POINTS 3 != WIDTH x HEIGHT 2"},
@@ -83,11 +83,14 @@ std::vector<BadFile> Cases() {
       {"PcdInf", "pcd", pcd_header + "DATA ascii\n1 2 3\n1 inf 3\n", "infinite coordinate"},
       {"PcdNoData", "pcd", pcd_header, "no DATA line"},
       {"E57Empty", "e57", "", "empty file"},
-      {"E57NotE57", "e57", std::string(2048, 'x'), "page 0 (bytes 0-1023) fails its CRC-32C checksum"},
+      {"E57NotE57", "e57", std::string(2048, 'x'),
+       "page 0 (bytes 0-1023) fails its CRC-32C checksum"},
       {"E57Truncated", "e57", std::string(1000, '\0'), "not a whole number of 1024-byte E57 pages"},
       {"PlyNotPly", "ply", "solid cube\n", "not a PLY file"},
       {"PlyTruncated", "ply", ply_header + "1 2 3\n", "file ends after 1 of 2"},
       {"PlyNan", "ply", ply_header + "1 2 3\nnan 2 3\n", "non-finite"},
+      {"PlyPointList", "ply", ply_header + "1 2 3\n1 2 4\n",
+       "the fit needs an organized scan on its angular lattice"},
       {"PlyNegativeCount", "ply",
        "ply\nformat ascii 1.0\nelement vertex -2\nproperty float x\nproperty float y\n"
        "property float z\nend_header\n",
@@ -163,15 +166,16 @@ TEST_P(BadInputCliTest, ExitsTwoWithOneLineAndNoOutput) {
   const bool model = std::string(c.extension) == "urdf";
   const std::string urdf = model ? bad : kAssets + "robot/robot.urdf";
   const std::string scan = model ? kAssets + "samples/two_scans.ptx" : bad;
-  const std::string outputs = " --out=" + Path("result.json") + " --out_joint_states=" +
-                              Path("j.yaml") + " --out_urdf=" + Path("fitted.urdf");
+  const std::string outputs = " --out=" + Path("result.json") +
+                              " --out_joint_states=" + Path("j.yaml") +
+                              " --out_urdf=" + Path("fitted.urdf");
   const RunResult r = Run("fit --urdf=" + urdf + " --scan=" + scan + outputs);
   EXPECT_FALSE(r.signaled);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find(bad), std::string::npos) << "the file is not named: " << r.err;
-  EXPECT_NE(r.err.find(c.expected), std::string::npos) << "expected '" << c.expected
-                                                       << "' in: " << r.err;
+  EXPECT_NE(r.err.find(c.expected), std::string::npos)
+      << "expected '" << c.expected << "' in: " << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
   for (const char* output : {"result.json", "j.yaml", "fitted.urdf"}) {
     EXPECT_FALSE(fs::exists(Path(output))) << output;

@@ -1,7 +1,8 @@
 // edgefit scan --scene and edgefit cell through the command line: a small
 // cell of two balancer arms and an arm that is not looked for, written as
-// E57, both found and their points gone from the background; bad scene and
-// model files end with exit 2, one line naming the file, and no output.
+// E57, both found and their points gone from the background; the search
+// limited to a region of interest; bad scene and model files and regions
+// end with exit 2, one line naming the file, and no output.
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -18,11 +19,16 @@ class CellCliTest : public CliTest {
   std::string Scene() {
     return Write("scene.json",
                  "{\"assets\": [\n"
-                 " {\"name\": \"a\", \"urdf\": \"" + kModels + "balancer_arm.urdf\", "
-                 "\"joints\": \"joint_1=20deg,joint_2=-0.3\", \"base\": [-1.0, 0, 0]},\n"
-                 " {\"name\": \"b\", \"urdf\": \"" + kModels + "balancer_arm.urdf\", "
-                 "\"joints\": \"joint_1=-30deg,joint_2=0.2\", \"base\": [1.0, 0.3, 90]},\n"
-                 " {\"name\": \"other\", \"urdf\": \"" + kModels + "fk_arm.urdf\", \"base\": [0, 2.0, 0]}]}\n");
+                 " {\"name\": \"a\", \"urdf\": \"" +
+                     kModels +
+                     "balancer_arm.urdf\", "
+                     "\"joints\": \"joint_1=20deg,joint_2=-0.3\", \"base\": [-1.0, 0, 0]},\n"
+                     " {\"name\": \"b\", \"urdf\": \"" +
+                     kModels +
+                     "balancer_arm.urdf\", "
+                     "\"joints\": \"joint_1=-30deg,joint_2=0.2\", \"base\": [1.0, 0.3, 90]},\n"
+                     " {\"name\": \"other\", \"urdf\": \"" +
+                     kModels + "fk_arm.urdf\", \"base\": [0, 2.0, 0]}]}\n");
   }
   std::string Models(const std::string& count) {
     return Write("models.json", "{\"models\": [{\"name\": \"arm\", \"urdf\": \"" + kModels +
@@ -34,17 +40,19 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "three whole fits: release suite only";
 #endif
-  const RunResult scan = Run("scan --scene=" + Scene() + " --scanners=3 --spacing_mm=6 --seed=3 --out=" +
-                             Path("cell.e57") + " --truth=" + Path("truth.json"));
+  const RunResult scan = Run("scan --scene=" + Scene() +
+                             " --scanners=3 --spacing_mm=6 --seed=3 --out=" + Path("cell.e57") +
+                             " --truth=" + Path("truth.json"));
   ASSERT_EQ(scan.exit_code, 0) << scan.err;
   const nlohmann::json truth = nlohmann::json::parse(Slurp(Path("truth.json")));
   ASSERT_EQ(truth["assets"].size(), 3u);
   EXPECT_EQ(truth["assets"][1]["name"], "b");
   EXPECT_GT(truth["assets"][1]["counts"]["link"].get<size_t>(), 1000u);
 
-  const RunResult cell = Run("cell --models=" + Models("\"every\"") + " --scan=" + Path("cell.e57") +
-                             " --truth=" + Path("truth.json") + " --out=" + Path("r.json") +
-                             " --out_dir=" + Path("") + " --out_background=" + Path("rest.e57"));
+  const RunResult cell =
+      Run("cell --models=" + Models("\"every\"") + " --scan=" + Path("cell.e57") +
+          " --truth=" + Path("truth.json") + " --out=" + Path("r.json") + " --out_dir=" + Path("") +
+          " --out_background=" + Path("rest.e57"));
   ASSERT_EQ(cell.exit_code, 0) << cell.err;
   const nlohmann::json r = nlohmann::json::parse(Slurp(Path("r.json")));
   ASSERT_EQ(r["instances"].size(), 2u);
@@ -57,13 +65,50 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
     // The arms' square bases: joint_1 nearest zero of the quarter turns,
     // which the truth's 20 and -30 deg are.
     EXPECT_LT(instance["worst_revolute_error_deg"].get<double>(), 0.05) << instance["id"];
-    const nlohmann::json result = nlohmann::json::parse(Slurp(instance["result"].get<std::string>()));
+    const nlohmann::json result =
+        nlohmann::json::parse(Slurp(instance["result"].get<std::string>()));
     EXPECT_TRUE(result.contains("joint_status"));
   }
   const RunResult rest = Run("info --json --scan=" + Path("rest.e57"));
   ASSERT_EQ(rest.exit_code, 0) << rest.err;
-  EXPECT_EQ(nlohmann::json::parse(rest.out)["total_valid"].get<size_t>(), r["background"]["points"].get<size_t>());
+  EXPECT_EQ(nlohmann::json::parse(rest.out)["total_valid"].get<size_t>(),
+            r["background"]["points"].get<size_t>());
   EXPECT_GT(r["background"]["removed_points"].get<size_t>(), 20000u);
+}
+
+// --roi: the arms are looked for in the box around "a" only; "b" stays in
+// the background, and a's points leave the whole scan.
+TEST_F(CellCliTest, TheRegionOfInterestLimitsTheSearch) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "a whole fit: release suite only";
+#endif
+  const RunResult scan = Run("scan --scene=" + Scene() +
+                             " --scanners=3 --spacing_mm=6 --seed=3 --out=" + Path("cell.e57") +
+                             " --truth=" + Path("truth.json"));
+  ASSERT_EQ(scan.exit_code, 0) << scan.err;
+  const std::string cell = "cell --models=" + Models("\"every\"") + " --scan=" + Path("cell.e57") +
+                           " --truth=" + Path("truth.json") + " --out=" + Path("r.json");
+  const RunResult run = Run(cell + " --roi=-2.2,-1.2,-0.5,-0.1,1.2,3");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json r = nlohmann::json::parse(Slurp(Path("r.json")));
+  ASSERT_EQ(r["instances"].size(), 1u);
+  EXPECT_EQ(r["instances"][0]["truth_asset"], "a");
+  EXPECT_LT(r["instances"][0]["worst_revolute_error_deg"].get<double>(), 0.05);
+  EXPECT_EQ(r["truth_assets_not_found"], nlohmann::json::array({"b", "other"}));
+  EXPECT_GT(r["roi"]["points"].get<size_t>(), 10000u);
+  EXPECT_GT(r["background"]["removed_points"].get<size_t>(), 10000u);
+  EXPECT_EQ(r["roi"]["min"], nlohmann::json::array({-2.2, -1.2, -0.5}));
+
+  // A box without points and a malformed box: exit 2, one line, no output.
+  fs::remove(Path("r.json"));
+  for (const std::string roi : {"10,10,10,11,11,11", "1,2,3"}) {
+    const RunResult bad = Run(cell + " --roi=" + roi);
+    EXPECT_EQ(bad.exit_code, 2) << roi << "\n" << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_NE(bad.err.find(roi == "1,2,3" ? "--roi" : "region of interest"), std::string::npos)
+        << bad.err;
+    EXPECT_FALSE(fs::exists(Path("r.json")));
+  }
 }
 
 TEST_F(CellCliTest, BadSceneAndModelFilesExitTwoWithoutOutput) {
@@ -71,7 +116,8 @@ TEST_F(CellCliTest, BadSceneAndModelFilesExitTwoWithoutOutput) {
   struct Case {
     std::string args, file, expected;
   };
-  const std::string no_base = Write("no_base.json", "{\"assets\": [{\"urdf\": \"" + kModels + "fk_arm.urdf\"}]}");
+  const std::string no_base =
+      Write("no_base.json", "{\"assets\": [{\"urdf\": \"" + kModels + "fk_arm.urdf\"}]}");
   const std::string empty = Write("empty.json", "{\"assets\": []}");
   const std::string not_json = Write("not_json.json", "assets: none");
   const std::string count_zero = Models("0");
@@ -80,9 +126,12 @@ TEST_F(CellCliTest, BadSceneAndModelFilesExitTwoWithoutOutput) {
       {"scan --scene=" + no_base + scene_out, no_base, "\"base\" must be [x, y, yaw_deg]"},
       {"scan --scene=" + empty + scene_out, empty, "no \"assets\" array"},
       {"scan --scene=" + not_json + scene_out, not_json, "not a JSON object"},
-      {"scan --scene=" + no_base + " --urdf=" + kModels + "fk_arm.urdf" + scene_out, "--scene", "drop --urdf"},
-      {"cell --models=" + count_zero + " --scan=x.e57 --out=" + Path("r.json"), count_zero, "\"count\" must be"},
-      {"cell --models=" + no_mesh + " --scan=x.e57 --out=" + Path("r.json"), "nowhere.urdf", "nowhere.urdf"},
+      {"scan --scene=" + no_base + " --urdf=" + kModels + "fk_arm.urdf" + scene_out, "--scene",
+       "drop --urdf"},
+      {"cell --models=" + count_zero + " --scan=x.e57 --out=" + Path("r.json"), count_zero,
+       "\"count\" must be"},
+      {"cell --models=" + no_mesh + " --scan=x.e57 --out=" + Path("r.json"), "nowhere.urdf",
+       "nowhere.urdf"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args);
@@ -90,7 +139,8 @@ TEST_F(CellCliTest, BadSceneAndModelFilesExitTwoWithoutOutput) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(c.file), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
-    for (const char* output : {"c.e57", "t.json", "r.json"}) EXPECT_FALSE(fs::exists(Path(output))) << output;
+    for (const char* output : {"c.e57", "t.json", "r.json"})
+      EXPECT_FALSE(fs::exists(Path(output))) << output;
   }
 }
 

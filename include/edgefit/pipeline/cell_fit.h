@@ -20,6 +20,7 @@
 #ifndef EDGEFIT_PIPELINE_CELL_FIT_H_
 #define EDGEFIT_PIPELINE_CELL_FIT_H_
 
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,10 @@ struct CellOptions {
   AttachedPointsOptions attached;
   // At most this many instances of one model with count 0.
   int max_instances = 16;
+  // Optional region (world frame; empty: the whole scan): instances are
+  // looked for and fitted on its points only; each found instance's points
+  // leave the whole scan, inside the region or not.
+  Eigen::AlignedBox3d roi_world;
 };
 
 struct CellInstance {
@@ -73,9 +78,10 @@ struct CellResult {
   std::vector<CellInstance> instances;  // in the order found
   std::vector<CellModelOutcome> models;
   size_t points = 0, background_points = 0;
-  size_t mixed_pixels = 0;     // removed before the edges
-  double edge_seconds = 0.0;   // the one edge detection
-  double seconds = 0.0;        // in all
+  size_t roi_points = 0;      // in CellOptions::roi_world (when given)
+  size_t mixed_pixels = 0;    // removed before the edges
+  double edge_seconds = 0.0;  // the one edge detection
+  double seconds = 0.0;       // in all
 };
 
 // Whether a fit is an instance of its model: the base body ok and no body a
@@ -83,7 +89,7 @@ struct CellResult {
 bool IsInstance(const FitResult& fit);
 
 // `scans` becomes the background: every found instance's points removed.
-// Fails (Status) where Fit() fails.
+// Fails (Status) where Fit() fails, and on a region that holds no point.
 Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
                const ProgressFn& progress, ScanSet* scans, CellResult* result);
 
