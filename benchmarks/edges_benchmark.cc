@@ -2,8 +2,10 @@
 // ~5 M point virtual scan of the bundled robot (assets/robot/robot.urdf,
 // posture "home") on a floor from 3 scanners at ~1.7 mm spacing, 1 mm noise:
 // per-stage kernels (4.1 normals, 4.2 scores, 4.3 region growing), the whole
-// DetectEdges, and as reference a nanoflann kd-tree normal estimation at the
-// same physical radius (tree build + radius search + PCA), 1 and 2 threads.
+// DetectEdges, the whole fit at its defaults (Fit(): every stage to the
+// verdict, reading aside), and as reference for both a nanoflann kd-tree
+// normal estimation at the same physical radius (tree build + radius search
+// + PCA), 1 and 2 threads.
 //   build-edges/benchmarks/edges_benchmark --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 #include <glog/logging.h>
@@ -18,6 +20,7 @@
 #include "edgefit/edges/edge_score.h"
 #include "edgefit/edges/grid_normals.h"
 #include "edgefit/edges/region_growing.h"
+#include "edgefit/pipeline/fit.h"
 
 namespace edgefit {
 namespace {
@@ -27,6 +30,7 @@ namespace {
 #endif
 
 struct Fixture {
+  KinematicModel model;
   ScanSet scans;
   std::vector<GridCloud> clouds;
   std::vector<GridNormals> normals;
@@ -41,6 +45,7 @@ Fixture& GetFixture() {
     auto* f = new Fixture;
     BundledRobotScan robot = ScanBundledRobot();
     f->spacing = robot.spacing;
+    f->model = std::move(robot.model);
     f->scans = std::move(robot.scans);
     GridNormalOptions normal_options;
     EdgeScoreOptions score_options;
@@ -139,6 +144,24 @@ void BM_DetectEdges(benchmark::State& state) {
   state.counters["bytes_per_point"] = bytes / static_cast<double>(f.scans.TotalValid());
 }
 BENCHMARK(BM_DetectEdges)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The whole fit of the bundled robot (no gun) at the defaults, edges (none
+// with the default uniform weights) to the verdict; the scan is in memory.
+void BM_WholeFit(benchmark::State& state) {
+  Fixture& f = GetFixture();
+  ThreadScope threads(static_cast<int>(state.range(0)));
+  FitResult result;
+  for (auto _ : state) {
+    CHECK(Fit(f.model, f.scans, FitOptions(), nullptr, &result).ok());
+    CHECK(result.ok) << result.message;
+  }
+  SetPointCounters(state, f);
+  state.counters["base_rough_s"] = result.timings.base_rough;
+  state.counters["chain_s"] = result.timings.base_precise + result.timings.chain;
+  state.counters["stations_s"] = result.timings.stations;
+  state.counters["refine_s"] = result.timings.refine;
+}
+BENCHMARK(BM_WholeFit)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 // Reference: the same radius with a 3D kd-tree instead of the lattice window
 // (nanoflann tree per scan, radius search, one unweighted PCA per point).
