@@ -176,6 +176,9 @@ Status FitBaseRough(const ScanSet& scans, double floor_z, const TriangleMesh& ba
     best.insert(at, {inliers, T});
     if (best.size() > static_cast<size_t>(options.candidates)) best.pop_back();
   };
+  // The hypotheses are drawn in order, scored in parallel, then kept in
+  // order: the same result for any thread count.
+  std::vector<Eigen::Isometry2d> hypotheses;
   for (int it = 0; !drawable.empty() && it < options.iterations; ++it) {
     const size_t k = drawable[static_cast<size_t>(rng.Next() % drawable.size())];
     const std::vector<int>& sc = scan_corners[k];
@@ -196,14 +199,17 @@ Status FitBaseRough(const ScanSet& scans, double floor_z, const TriangleMesh& ba
           mp[static_cast<size_t>(model_corners[k][static_cast<size_t>(lo->a)])];
       const Eigen::Vector2d& mb =
           mp[static_cast<size_t>(model_corners[k][static_cast<size_t>(lo->b)])];
-      for (int order = 0; order < 2; ++order) {
-        const Eigen::Isometry2d T =
-            order == 0 ? Hypothesis(ma, mb, sa, sb) : Hypothesis(mb, ma, sa, sb);
-        ++result->hypotheses;
-        keep(score(T), T);
-      }
+      hypotheses.push_back(Hypothesis(ma, mb, sa, sb));
+      hypotheses.push_back(Hypothesis(mb, ma, sa, sb));
     }
   }
+  std::vector<size_t> inliers(hypotheses.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::ptrdiff_t h = 0; h < static_cast<std::ptrdiff_t>(hypotheses.size()); ++h) {
+    inliers[static_cast<size_t>(h)] = score(hypotheses[static_cast<size_t>(h)]);
+  }
+  for (size_t h = 0; h < hypotheses.size(); ++h) keep(inliers[h], hypotheses[h]);
+  result->hypotheses += static_cast<int>(hypotheses.size());
   // Few corners (a round base with one or two per section): one hidden
   // leaves no pair. Then every scan corner is matched to every model corner
   // at its height, the yaw on a grid; a sparse score ranks them, the best
