@@ -19,6 +19,7 @@ bool BaseHypothesesOptions::IsValid(std::string* error) const {
   if (alternatives < 0 || !(alternative_loss >= 0.0)) {
     return fail("base alternatives and alternative_loss must be >= 0");
   }
+  if (!(instance_separation > 0.0)) return fail("instance_separation must be > 0");
   return true;
 }
 

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,13 @@ struct BaseHypothesesOptions {
   // the bundled robot's `home` at 1.7 mm fitted one, about 3 s more.
   int alternatives = 1;
   double alternative_loss = 0.001;  // [m] per sample
+  // Extension for cells: an alternative whose base stands farther than this
+  // from the best rough pose's [m] is another machine's place (a second
+  // robot of the model, found by the next search), not another reading of
+  // this one: it is fitted only when the best one's base does not match the
+  // scan. Infinite (edgefit fit): every alternative is fitted; the cell fit
+  // sets 0.5 m (the demo cell's first robot fitted its twin 2.7 m away, 3 s).
+  double instance_separation = std::numeric_limits<double>::infinity();
 
   bool IsValid(std::string* error) const;
 };

@@ -190,6 +190,16 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   EDGEFIT_RETURN_IF_ERROR(fit_from(roughs.front(), &icp, &chain, &best));
   const auto alternatives_start = std::chrono::steady_clock::now();
   for (size_t k = 1; k < roughs.size(); ++k) {
+    const double apart = (roughs[k].translation() - roughs.front().translation()).norm();
+    if (apart > options.base.hypotheses.instance_separation && !best.base_mismatch) {
+      char line[160];
+      std::snprintf(line, sizeof(line),
+                    "base: alternative rough pose %zu stands %.2f m away: another machine's "
+                    "place, not fitted",
+                    k, apart);
+      say(line);
+      continue;
+    }
     say("base: the whole chain from alternative rough pose " + std::to_string(k));
     Attempt other;
     EDGEFIT_RETURN_IF_ERROR(fit_from(roughs[k], &icp, &chain, &other));

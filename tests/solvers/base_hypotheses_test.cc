@@ -66,5 +66,16 @@ TEST(BaseHypothesesTest, AnElongatedBaseSlidesAlongItsLength) {
               0.0, 1e-12);
 }
 
+TEST(BaseHypothesesTest, OptionsAreChecked) {
+  BaseHypothesesOptions options;
+  std::string error;
+  EXPECT_TRUE(options.IsValid(&error)) << error;
+  options.instance_separation = 0.5;  // the cell fit's
+  EXPECT_TRUE(options.IsValid(&error)) << error;
+  options.instance_separation = 0.0;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("instance_separation"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace edgefit
