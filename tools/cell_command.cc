@@ -294,31 +294,8 @@ Command CellCommand() {
       "  edgefit cell --models=examples/cell/models.json --scan=cell.e57 "
       "--truth=cell_truth.json \\\n"
       "    --out=cell_result.json --out_background=cell_rest.e57",
-      {"models",
-       "scan",
-       "out",
-       "out_dir",
-       "out_background",
-       "background_distance_mm",
-       "truth",
-       "roi",
-       "weighting",
-       "w_high",
-       "loss",
-       "loss_scale_mm",
-       "lambda",
-       "parameterization",
-       "refine_chain",
-       "align_stations",
-       "station_rounds",
-       "station_max_covered_share",
-       "covering_rounds",
-       "remove_mixed_pixels",
-       "mixed_pixel_tolerance_mm",
-       "mixed_pixel_lines",
-       "mixed_pixel_neighbour_lines",
-       "threads",
-       "seed"},
+      WithFitOptionFlags({"models", "scan", "out", "out_dir", "out_background",
+                          "background_distance_mm", "truth", "roi", "threads", "seed"}),
       &RunCell};
 }
 

@@ -100,6 +100,17 @@ Status CheckFitFlags() {
   return FitOptionsFromFlags(AssetKind::kArticulated, &options);
 }
 
+std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own) {
+  for (const char* flag : {"weighting", "w_high", "loss", "loss_scale_mm", "lambda",
+                           "parameterization", "refine_chain", "align_stations",
+                           "station_rounds", "station_max_covered_share", "covering_rounds",
+                           "remove_mixed_pixels", "mixed_pixel_tolerance_mm", "mixed_pixel_lines",
+                           "mixed_pixel_neighbour_lines"}) {
+    own.emplace_back(flag);
+  }
+  return own;
+}
+
 Status RoiFromFlags(Eigen::AlignedBox3d* box, bool* given) {
   *given = !FLAGS_roi.empty();
   if (!*given) return Status::Ok();

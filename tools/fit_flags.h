@@ -7,6 +7,8 @@
 #include <gflags/gflags.h>
 
 #include <Eigen/Geometry>
+#include <string>
+#include <vector>
 
 #include "edgefit/core/status.h"
 #include "edgefit/pipeline/asset_kind.h"
@@ -41,6 +43,10 @@ Status CheckFitFlags();
 
 // --roi as a world box; *given false when the flag is empty.
 Status RoiFromFlags(Eigen::AlignedBox3d* box, bool* given);
+
+// A command's own flags followed by the fit options' (--weighting ...
+// --mixed_pixel_neighbour_lines), which edgefit fit and cell both take.
+std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own);
 
 }  // namespace edgefit::tools
 
