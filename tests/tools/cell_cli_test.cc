@@ -62,6 +62,10 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
   EXPECT_EQ(r["truth_assets_not_found"], nlohmann::json::array({"other"}));
   for (const auto& instance : r["instances"]) {
     EXPECT_LT(instance["base_error_mm"].get<double>(), 1.0) << instance["id"];
+    // Written station poses are exact here: the survey's frame is the world.
+    EXPECT_NEAR(instance["base_survey_error_mm"].get<double>(),
+                instance["base_error_mm"].get<double>(), 1e-9)
+        << instance["id"];
     // The arms' square bases: joint_1 nearest zero of the quarter turns,
     // which the truth's 20 and -30 deg are.
     EXPECT_LT(instance["worst_revolute_error_deg"].get<double>(), 0.05) << instance["id"];
