@@ -6,14 +6,10 @@
 #include <map>
 #include <utility>
 
+#include "edgefit/scan/lattice_window.h"
+
 namespace edgefit {
 namespace {
-
-// Lattice steps [pixels] covering `radius` at `range` for an angular step.
-int HalfWindow(double radius, double range, double step, int cap) {
-  if (!(step > 0.0) || !(range > 0.0)) return cap;
-  return std::max(1, std::min(cap, static_cast<int>(std::ceil(radius / (range * step)))));
-}
 
 // The unit normal of the surface at (row, col) in the scanner frame from its
 // four lattice neighbours; false at the grid's border, a missing neighbour
@@ -21,11 +17,13 @@ int HalfWindow(double radius, double range, double step, int cap) {
 bool StencilNormal(const OrganizedScan& scan, int row, int col, const FloorOptions& options,
                    Eigen::Vector3f* normal) {
   const Eigen::Vector3f& p = scan.point_scanner(scan.Index(row, col));
-  const double range = p.norm();
-  const int dr = HalfWindow(options.normal_radius, range, std::abs(scan.lattice().elevation_step()),
-                            options.max_half_window);
-  const int dc = HalfWindow(options.normal_radius, range, std::abs(scan.lattice().azimuth_step()),
-                            options.max_half_window);
+  const float radius = static_cast<float>(options.normal_radius), range = p.norm();
+  const int dr =
+      HalfWindow(radius, range, static_cast<float>(std::abs(scan.lattice().elevation_step())),
+                 options.max_half_window);
+  const int dc =
+      HalfWindow(radius, range, static_cast<float>(std::abs(scan.lattice().azimuth_step())),
+                 options.max_half_window);
   if (row - dr < 0 || row + dr >= scan.rows() || col - dc < 0 || col + dc >= scan.cols()) {
     return false;
   }

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "edgefit/scan/lattice_window.h"
 #include "edgefit/scan/organized_scan.h"
 
 namespace edgefit {
@@ -22,8 +23,8 @@ struct GridCloud {
   int cols = 0;
   // Column cols-1 neighbours column 0 (a full 360 degree scan).
   bool wrap_cols = false;
-  float row_step = 0.0f;  // |elevation step| [rad]
-  float col_step = 0.0f;  // |azimuth step| [rad]
+  float row_step = 0.0f;       // |elevation step| [rad]
+  float col_step = 0.0f;       // |azimuth step| [rad]
   std::vector<float> x, y, z;  // p_scanner [m], NaN when missing
   std::vector<float> range;    // |p_scanner| [m], NaN when missing
 
@@ -33,16 +34,6 @@ struct GridCloud {
   // Copies the points of an organized scan whose lattice is set (CHECKed).
   static GridCloud FromScan(const OrganizedScan& scan);
 };
-
-// Half width in pixels of the lattice window that covers `radius` [m] around
-// a point at `range` [m] for an angular step `step` [rad] (paper Sec. 4.1:
-// the pixel radius scales inversely with the distance), at least 1 and at
-// most `cap`.
-inline int HalfWindow(float radius, float range, float step, int cap) {
-  const float pixels = std::ceil(radius / (range * step));
-  if (!(pixels < static_cast<float>(cap))) return cap;  // also NaN / inf
-  return std::max(1, static_cast<int>(pixels));
-}
 
 // Calls f(cell_begin, cell_end) for each column segment of the pixel window
 // of half size (half_rows, half_cols) around (row, col): the cells of one
