@@ -111,6 +111,8 @@ int RunCell(const Command& command) {
   if (!(FLAGS_background_distance_mm > 0.0))
     return BadInput(command, "--background_distance_mm must be > 0");
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out, FLAGS_out_background}));
+  if (!FLAGS_out_dir.empty()) EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputFolder(FLAGS_out_dir));
   CellOptions options;
   bool has_roi = false;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, RoiFromFlags(&options.roi_world, &has_roi));
@@ -144,10 +146,16 @@ int RunCell(const Command& command) {
 
   // Outputs: each atomic; a later failure removes the earlier ones.
   std::vector<std::string> written;
+  bool made_out_dir = false;
   auto fail = [&](const Status& status) {
     for (const std::string& path : written) std::remove(path.c_str());
+    if (made_out_dir) std::remove(FLAGS_out_dir.c_str());  // made by this run, empty again
     return BadInput(command, status);
   };
+  if (!FLAGS_out_dir.empty()) {
+    const Status made = CreateFolder(FLAGS_out_dir, &made_out_dir);
+    if (!made.ok()) return fail(made);
+  }
   json out;
   out["scan"] = SplitList(FLAGS_scan);
   out["models"] = json::array();

@@ -8,14 +8,17 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "edgefit/core/atomic_file.h"
+
 namespace edgefit::tools {
 namespace {
 
 // Flags every command accepts (gflags' own and glog's).
 bool IsGlobalFlag(const std::string& name) {
-  static const char* kGlobal[] = {"help", "helpfull", "helpshort", "version", "v",
-                                  "logtostderr", "alsologtostderr", "minloglevel",
-                                  "stderrthreshold", "vmodule", "flagfile", "fromenv"};
+  static const char* kGlobal[] = {
+      "help",        "helpfull",        "helpshort",   "version",         "v",
+      "logtostderr", "alsologtostderr", "minloglevel", "stderrthreshold", "vmodule",
+      "flagfile",    "fromenv"};
   for (const char* g : kGlobal) {
     if (name == g) return true;
   }
@@ -85,8 +88,8 @@ void PrintCommandHelp(const Command& command) {
   for (const std::string& name : command.flags) {
     google::CommandLineFlagInfo info;
     if (!google::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
-    std::cout << "  --" << info.name << " (" << info.type << ", default \""
-              << info.default_value << "\")\n      " << info.description << "\n";
+    std::cout << "  --" << info.name << " (" << info.type << ", default \"" << info.default_value
+              << "\")\n      " << info.description << "\n";
   }
 }
 
@@ -119,6 +122,13 @@ std::vector<std::string> SplitList(const std::string& list) {
     start = end + 1;
   }
   return items;
+}
+
+Status CheckOutputPaths(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    if (!path.empty()) EDGEFIT_RETURN_IF_ERROR(CheckOutputPath(path));
+  }
+  return Status::Ok();
 }
 
 Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x, double* y,

@@ -53,6 +53,11 @@ std::vector<std::string> SplitList(const std::string& list);
 Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x, double* y,
                      double* yaw);
 
+// Every output file of a command (empty: not asked for) can be written
+// (CheckOutputPath): checked before any work, so that a wrong path fails
+// at once and not after a long fit.
+Status CheckOutputPaths(const std::vector<std::string>& paths);
+
 
 }  // namespace edgefit::tools
 

@@ -88,6 +88,9 @@ int RunFit(const Command& command) {
     return BadInput(command, "--background_distance_mm must be > 0");
   }
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());  // before any file is read
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, CheckOutputPaths({FLAGS_out, FLAGS_out_joint_states, FLAGS_out_urdf, FLAGS_out_ply,
+                                 FLAGS_out_background}));
   Eigen::AlignedBox3d roi;
   bool has_roi = false;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, RoiFromFlags(&roi, &has_roi));

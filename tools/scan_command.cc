@@ -128,7 +128,7 @@ Status ValidateFlags() {
   if (!(FLAGS_noise_mm >= 0 && FLAGS_noise_mm < 100)) return Status::Error("--noise_mm must be in [0, 100)");
   if (!(FLAGS_max_range_m > 0)) return Status::Error("--max_range_m must be positive");
   if (FLAGS_clutter < 0 || FLAGS_clutter > 100) return Status::Error("--clutter must be 0..100");
-  return Status::Ok();
+  return CheckOutputPaths({FLAGS_out, FLAGS_truth, FLAGS_labels});
 }
 
 // Writes the scan(s), the truth and the labels. Each file is atomic; if a

@@ -5,8 +5,10 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 
 namespace edgefit {
 
@@ -40,6 +42,55 @@ Status WriteStringAtomically(const std::string& path, const std::string& content
     out.write(content.data(), static_cast<std::streamsize>(content.size()));
     return Status::Ok();
   });
+}
+
+namespace {
+
+// `folder` ("" is the working folder) exists, is a folder and takes files.
+Status CheckFolderTakesFiles(const std::string& what, const std::string& folder) {
+  const std::string dir = folder.empty() ? "." : folder;
+  std::error_code error;
+  if (!std::filesystem::exists(dir, error)) {
+    return Status::Error(what + ": the folder " + dir + " does not exist");
+  }
+  if (!std::filesystem::is_directory(dir, error)) {
+    return Status::Error(what + ": " + dir + " is not a folder");
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    return Status::Error(what + ": cannot write in the folder " + dir + ": " +
+                         std::strerror(errno));
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status CheckOutputPath(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    return Status::Error(path + ": is a folder, not a file name");
+  }
+  return CheckFolderTakesFiles(path, std::filesystem::path(path).parent_path().string());
+}
+
+Status CheckOutputFolder(const std::string& folder) {
+  std::error_code error;
+  std::filesystem::path existing(folder);
+  while (!existing.empty() && !std::filesystem::exists(existing, error)) {
+    existing = existing.parent_path();
+  }
+  return CheckFolderTakesFiles(folder, existing.string());
+}
+
+Status CreateFolder(const std::string& folder, bool* created) {
+  std::error_code error;
+  const bool made = std::filesystem::create_directories(folder, error);
+  if (error) return Status::Error(folder + ": cannot make the folder: " + error.message());
+  if (!std::filesystem::is_directory(folder, error)) {
+    return Status::Error(folder + ": is not a folder");
+  }
+  if (created != nullptr) *created = made;
+  return Status::Ok();
 }
 
 Status ReadFileToString(const std::string& path, std::string* content) {

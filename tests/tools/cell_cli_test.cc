@@ -51,7 +51,7 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
 
   const RunResult cell =
       Run("cell --models=" + Models("\"every\"") + " --scan=" + Path("cell.e57") +
-          " --truth=" + Path("truth.json") + " --out=" + Path("r.json") + " --out_dir=" + Path("") +
+          " --truth=" + Path("truth.json") + " --out=" + Path("r.json") + " --out_dir=" + Path("instances/new") +
           " --out_background=" + Path("rest.e57"));
   ASSERT_EQ(cell.exit_code, 0) << cell.err;
   const nlohmann::json r = nlohmann::json::parse(Slurp(Path("r.json")));
@@ -136,6 +136,12 @@ TEST_F(CellCliTest, BadSceneAndModelFilesExitTwoWithoutOutput) {
        "\"count\" must be"},
       {"cell --models=" + no_mesh + " --scan=x.e57 --out=" + Path("r.json"), "nowhere.urdf",
        "nowhere.urdf"},
+      // Output paths are checked before the scans are read, not after the fit.
+      {"cell --models=" + count_zero + " --scan=x.e57 --out=" + Path("no_such_folder/r.json"),
+       "no_such_folder", "does not exist"},
+      {"cell --models=" + count_zero + " --scan=x.e57 --out=" + Path("r.json") +
+           " --out_dir=" + not_json,
+       not_json, "is not a folder"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args);

@@ -21,6 +21,20 @@ Status WriteFileAtomically(const std::string& path,
 // Convenience: writes `content` atomically.
 Status WriteStringAtomically(const std::string& path, const std::string& content);
 
+// Whether a file can be written at `path` later: its folder exists and
+// takes new files, and `path` is not a folder. Checked before long work so
+// that a wrong output path fails at once, not after it.
+Status CheckOutputPath(const std::string& path);
+
+// The same for a folder that will receive files: `folder` is a folder that
+// takes new files, or does not exist yet and its nearest existing parent
+// does (CreateFolder makes it when the files are written).
+Status CheckOutputFolder(const std::string& folder);
+
+// Makes `folder` and the parents it needs ("mkdir -p"); *created: whether
+// it did not exist before (may be null).
+Status CreateFolder(const std::string& folder, bool* created);
+
 // Reads a whole file into `content`; fails with "<path>: <reason>".
 Status ReadFileToString(const std::string& path, std::string* content);
 
