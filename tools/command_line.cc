@@ -10,6 +10,10 @@
 
 #include "edgefit/core/atomic_file.h"
 
+DEFINE_string(progress, "auto",
+              "Progress lines on stderr: auto (when stderr is a terminal), always (logs, batch "
+              "jobs), never.");
+
 namespace edgefit::tools {
 namespace {
 
@@ -18,7 +22,7 @@ bool IsGlobalFlag(const std::string& name) {
   static const char* kGlobal[] = {
       "help",        "helpfull",        "helpshort",   "version",         "v",
       "logtostderr", "alsologtostderr", "minloglevel", "stderrthreshold", "vmodule",
-      "flagfile",    "fromenv"};
+      "flagfile",    "fromenv",         "progress"};
   for (const char* g : kGlobal) {
     if (name == g) return true;
   }
@@ -79,6 +83,10 @@ Status ParseFlags(const Command& command, int argc, char** argv) {
       return Status::Error("flag --" + name + ": '" + value + "' is not a valid " + info.type);
     }
   }
+  if (FLAGS_progress != "auto" && FLAGS_progress != "always" && FLAGS_progress != "never") {
+    return Status::Error("flag --progress: '" + FLAGS_progress +
+                         "' is not one of auto, always, never");
+  }
   return Status::Ok();
 }
 
@@ -106,7 +114,8 @@ void PrintOverview() {
 }
 
 void Progress(const std::string& message) {
-  static const bool enabled = ::isatty(STDERR_FILENO) != 0;
+  static const bool enabled =
+      FLAGS_progress == "always" || (FLAGS_progress == "auto" && ::isatty(STDERR_FILENO) != 0);
   if (enabled) std::cerr << message << std::endl;
 }
 

@@ -25,6 +25,14 @@ TEST_F(CliTest, EdgesWritesWeightsJsonAndPly) {
                           Path("w.bin") + " --out_json=" + Path("e.json") + " --out_ply=" +
                           Path("e.ply") + " --w_high=7");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Progress only on a terminal, unless asked (stderr is a pipe here).
+  EXPECT_EQ(r.err.find("edges: "), std::string::npos) << r.err;
+  const RunResult logged =
+      Run("edges --progress=always --scan=" + scan + " --out_weights=" + Path("w2.bin") +
+          " --out_json=" + Path("e2.json"));
+  ASSERT_EQ(logged.exit_code, 0) << logged.err;
+  EXPECT_NE(logged.err.find("edges: "), std::string::npos) << logged.err;
+  ExpectBadInput("edges --progress=sometimes --scan=" + scan, "--progress");
   const nlohmann::json e = nlohmann::json::parse(Slurp(Path("e.json")));
   const nlohmann::json info = nlohmann::json::parse(Run("info --json --scan=" + scan).out);
   // One float32 per grid cell, scans in file order.
