@@ -112,7 +112,8 @@ int RunCell(const Command& command) {
     return BadInput(command, "--background_distance_mm must be > 0");
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out, FLAGS_out_background}));
-  if (!FLAGS_out_dir.empty()) EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputFolder(FLAGS_out_dir));
+  if (!FLAGS_out_dir.empty())
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputFolder(FLAGS_out_dir));
   CellOptions options;
   bool has_roi = false;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, RoiFromFlags(&options.roi_world, &has_roi));

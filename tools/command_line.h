@@ -58,7 +58,6 @@ Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x
 // at once and not after a long fit.
 Status CheckOutputPaths(const std::vector<std::string>& paths);
 
-
 }  // namespace edgefit::tools
 
 // In a command's run function: on a failed Status, print it as bad input

@@ -51,8 +51,8 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
 
   const RunResult cell =
       Run("cell --models=" + Models("\"every\"") + " --scan=" + Path("cell.e57") +
-          " --truth=" + Path("truth.json") + " --out=" + Path("r.json") + " --out_dir=" + Path("instances/new") +
-          " --out_background=" + Path("rest.e57"));
+          " --truth=" + Path("truth.json") + " --out=" + Path("r.json") +
+          " --out_dir=" + Path("instances/new") + " --out_background=" + Path("rest.e57"));
   ASSERT_EQ(cell.exit_code, 0) << cell.err;
   const nlohmann::json r = nlohmann::json::parse(Slurp(Path("r.json")));
   ASSERT_EQ(r["instances"].size(), 2u);

@@ -150,8 +150,8 @@ TEST_F(CliTest, FitBadInput) {
       "fit --urdf=" + kModel + " --scan=" + sample + out + " --background_distance_mm=-1",
       "--background_distance_mm");
   // Output paths are checked before the scans are read, not after the fit.
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + Path("none.ptx") + " --out=" +
-                     Path("no_such_folder/result.json"),
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + Path("none.ptx") +
+                     " --out=" + Path("no_such_folder/result.json"),
                  "the folder " + Path("no_such_folder") + " does not exist");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --out_urdf=" + Path(""),
                  "is a folder, not a file name");
