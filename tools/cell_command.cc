@@ -86,24 +86,6 @@ Status LoadModels(const std::string& path, std::vector<LoadedModel>* models) {
   return Status::Ok();
 }
 
-// The truth asset whose base is nearest to the instance's (within 0.5 m,
-// not taken yet, with the model's joints); -1 when none.
-int MatchTruth(const std::vector<CellTruthAsset>& truth, const std::vector<bool>& taken,
-               const KinematicModel& model, const Pose& T_world_base) {
-  int best = -1;
-  double best_distance = 0.5;
-  for (size_t a = 0; a < truth.size(); ++a) {
-    const double d =
-        (truth[a].truth.T_world_base.translation() - T_world_base.translation()).norm();
-    bool same_joints = !truth[a].truth.joints.empty();
-    for (const auto& [name, value] : truth[a].truth.joints)
-      same_joints = same_joints && model.JointIndex(name) >= 0;
-    if (!taken[a] && same_joints && d < best_distance)
-      best = static_cast<int>(a), best_distance = d;
-  }
-  return best;
-}
-
 int RunCell(const Command& command) {
   if (FLAGS_models.empty()) return BadInput(command, "--models is required");
   if (FLAGS_scan.empty()) return BadInput(command, "--scan is required");
@@ -192,7 +174,7 @@ int RunCell(const Command& command) {
                     {"removed_points", instance.removed_points},
                     {"base", result["base"]}};
     const int match =
-        truth.empty() ? -1 : MatchTruth(truth, taken, l.model, instance.fit.T_world_base);
+        truth.empty() ? -1 : MatchTruthAsset(truth, taken, l.model, instance.fit.T_world_base);
     std::string scored = truth.empty() ? "" : "  (no truth asset within 0.5 m)";
     if (match >= 0) {
       taken[static_cast<size_t>(match)] = true;

@@ -110,9 +110,9 @@ int RunFit(const Command& command) {
   for (const std::string& path : SplitList(FLAGS_scan)) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
   }
-  Truth truth;
+  std::vector<CellTruthAsset> truth;  // one asset, or a cell's (edgefit scan --scene)
   if (!FLAGS_truth.empty())
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadTruthJson(FLAGS_truth, &truth));
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -128,11 +128,16 @@ int RunFit(const Command& command) {
   }
   FitResult fit;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, Fit(model, has_roi ? in_roi : scans, options, &Progress, &fit));
+  // Scored against the truth's one asset, or the cell's asset of this model
+  // whose base is nearest the fitted one (within 0.5 m).
+  const int scored_asset =
+      truth.size() == 1 ? 0 : MatchTruthAsset(truth, {}, model, fit.T_world_base);
   FitErrors errors;
-  if (!FLAGS_truth.empty()) {
+  if (scored_asset >= 0) {
+    const Truth& t = truth[static_cast<size_t>(scored_asset)].truth;
     const Status status = CompareWithTruth(
-        model, fit.q, fit.T_world_base, truth.joints, truth.T_world_base,
-        SurveyFrame(truth.T_world_scanners, truth.sensor.T_world_scanners_written), &errors,
+        model, fit.q, fit.T_world_base, t.joints, t.T_world_base,
+        SurveyFrame(t.T_world_scanners, t.sensor.T_world_scanners_written), &errors,
         fit.base_symmetry);
     if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
     MarkUnobservableJoints(fit.bodies, &errors);
@@ -140,7 +145,7 @@ int RunFit(const Command& command) {
 
   json result = FitResultJson(model, kind, options, fit);
   result["timing_s"]["load"] = load_seconds;
-  if (!FLAGS_truth.empty()) {
+  if (scored_asset >= 0) {
     json e = json::object();
     for (const JointError& j : errors.joints) e[j.name] = j.error;
     result["errors"] = {{"joints", e},
@@ -150,6 +155,9 @@ int RunFit(const Command& command) {
                         {"base_survey_rotation_rad", errors.base_rotation_survey},
                         {"tool_tip_link", errors.tool_tip_link},
                         {"tool_tip_m", errors.tool_tip}};
+    if (truth.size() > 1) {
+      result["errors"]["truth_asset"] = truth[static_cast<size_t>(scored_asset)].name;
+    }
   }
 
   // Outputs: each atomic; a later failure removes the earlier ones.
@@ -213,7 +221,12 @@ int RunFit(const Command& command) {
   const Eigen::Vector3d xyz = fit.T_world_base.translation();
   std::printf("base: xyz %.4f %.4f %.4f m, rpy %.3f %.3f %.3f deg\n", xyz.x(), xyz.y(), xyz.z(),
               rpy.x() * 180.0 / M_PI, rpy.y() * 180.0 / M_PI, rpy.z() * 180.0 / M_PI);
-  if (FLAGS_truth.empty()) {
+  if (!FLAGS_truth.empty() && scored_asset < 0) {
+    std::printf("truth: no asset of %s with this model's joints stands within 0.5 m of the "
+                "fitted base: not scored\n",
+                FLAGS_truth.c_str());
+  }
+  if (scored_asset < 0) {
     for (size_t j = 0; j < model.joints().size(); ++j) {
       const Joint& joint = model.joints()[j];
       if (!joint.IsMoving()) continue;

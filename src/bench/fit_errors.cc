@@ -118,4 +118,20 @@ void MarkUnobservableJoints(const std::vector<BodyQuality>& bodies, FitErrors* e
   }
 }
 
+int MatchTruthAsset(const std::vector<CellTruthAsset>& truth, const std::vector<bool>& taken,
+                    const KinematicModel& model, const Pose& T_world_base, double max_distance) {
+  int best = -1;
+  double best_distance = max_distance;
+  for (size_t a = 0; a < truth.size(); ++a) {
+    if (a < taken.size() && taken[a]) continue;
+    bool same_joints = !truth[a].truth.joints.empty();
+    for (const auto& [name, value] : truth[a].truth.joints)
+      same_joints = same_joints && model.JointIndex(name) >= 0;
+    const double d =
+        (truth[a].truth.T_world_base.translation() - T_world_base.translation()).norm();
+    if (same_joints && d < best_distance) best = static_cast<int>(a), best_distance = d;
+  }
+  return best;
+}
+
 }  // namespace edgefit

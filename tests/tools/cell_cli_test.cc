@@ -5,6 +5,7 @@
 // end with exit 2, one line naming the file, and no output; an arm half
 // hidden behind another found and fitted.
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -103,6 +104,17 @@ TEST_F(CellCliTest, TheRegionOfInterestLimitsTheSearch) {
   EXPECT_GT(r["roi"]["points"].get<size_t>(), 10000u);
   EXPECT_GT(r["background"]["removed_points"].get<size_t>(), 10000u);
   EXPECT_EQ(r["roi"]["min"], nlohmann::json::array({-2.2, -1.2, -0.5}));
+
+  // edgefit fit on the same box, scored against the cell's truth: the asset
+  // of this model whose base is nearest the fitted one.
+  const std::string arm = " --urdf=" + kModels + "balancer_arm.urdf --scan=" + Path("cell.e57");
+  const RunResult fit = Run("fit" + arm + " --roi=-2.2,-1.2,-0.5,-0.1,1.2,3 --truth=" +
+                            Path("truth.json") + " --out=" + Path("f.json"));
+  ASSERT_EQ(fit.exit_code, 0) << fit.err;
+  const nlohmann::json f = nlohmann::json::parse(Slurp(Path("f.json")));
+  EXPECT_EQ(f["errors"]["truth_asset"], "a");
+  EXPECT_LT(f["errors"]["base_translation_m"].get<double>(), 1e-3);
+  EXPECT_LT(std::abs(f["errors"]["joints"]["joint_2"].get<double>()), 0.05 * M_PI / 180.0);
 
   // A box without points and a malformed box: exit 2, one line, no output.
   fs::remove(Path("r.json"));

@@ -12,6 +12,7 @@
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
 #include "edgefit/pipeline/fit_result.h"
+#include "edgefit/scanner/truth.h"
 
 namespace edgefit {
 
@@ -72,6 +73,14 @@ Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& 
                         const std::vector<std::pair<std::string, double>>& truth_joints,
                         const Pose& T_world_base_truth, const Pose& T_survey_world,
                         FitErrors* errors, const BaseSymmetry& symmetry = BaseSymmetry());
+
+// The asset of a cell's truth a fit of `model` with base T_world_base is
+// scored against: the one whose base is nearest (within max_distance [m]),
+// not taken yet (taken: one flag per asset, or empty) and with every joint
+// its truth names in the model; -1 when none.
+int MatchTruthAsset(const std::vector<CellTruthAsset>& truth, const std::vector<bool>& taken,
+                    const KinematicModel& model, const Pose& T_world_base,
+                    double max_distance = 0.5);
 
 // Sets JointError::unobservable from the fit's verdicts (FitResult::bodies).
 void MarkUnobservableJoints(const std::vector<BodyQuality>& bodies, FitErrors* errors);
