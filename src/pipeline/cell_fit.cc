@@ -10,6 +10,15 @@
 
 namespace edgefit {
 
+std::vector<size_t> SearchOrder(const std::vector<CellModel>& models) {
+  std::vector<size_t> order(models.size());
+  for (size_t m = 0; m < models.size(); ++m) order[m] = m;
+  std::stable_partition(order.begin(), order.end(), [&models](size_t m) {
+    return models[m].options.base.method != BaseOptions::Method::kArmTips;
+  });
+  return order;
+}
+
 bool IsInstance(const FitResult& fit) {
   bool base_ok = false;
   for (const BodyQuality& body : fit.bodies) {
@@ -57,7 +66,8 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
   }
   result->edge_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (size_t m = 0; m < models.size(); ++m) {
+  result->models.assign(models.size(), CellModelOutcome());
+  for (const size_t m : SearchOrder(models)) {
     const CellModel& cell_model = models[m];
     CHECK(cell_model.model != nullptr);
     CellModelOutcome outcome;
@@ -99,7 +109,7 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
       outcome.stopped = "at most " + std::to_string(wanted) + " instances";
     }
     outcome.count_met = cell_model.count == 0 || outcome.found == cell_model.count;
-    result->models.push_back(outcome);
+    result->models[m] = outcome;
   }
   result->background_points = scans->TotalValid();
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -121,5 +121,16 @@ TEST(CellFitTest, FindsBothRobotsAndLeavesTheOtherMachine) {
   EXPECT_EQ(result.background_points, scans.TotalValid());
 }
 
+// Robots are looked for before conveyance systems, whatever the order the
+// models are listed in; each group keeps its own order.
+TEST(CellFitTest, RobotsAreLookedForBeforeConveyors) {
+  std::vector<CellModel> models(4);
+  models[0].options = FitOptionsFor(AssetKind::kConveyance);
+  models[1].options = FitOptionsFor(AssetKind::kArticulated);
+  models[2].options = FitOptionsFor(AssetKind::kConveyance);
+  models[3].options = FitOptionsFor(AssetKind::kArticulated);
+  EXPECT_EQ(SearchOrder(models), (std::vector<size_t>{1, 3, 0, 2}));
+}
+
 }  // namespace
 }  // namespace edgefit

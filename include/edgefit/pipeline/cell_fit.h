@@ -1,8 +1,8 @@
 // Fits every instance of several models in the scans of one cell: each
-// model in the order given, instance after instance, Fit() on the points
-// that are left, the instance's points removed before the next (the paper's
-// purpose: the fitted equipment replaced by movable models, the rest kept
-// as the background).
+// model in turn (SearchOrder: robots first), instance after instance,
+// Fit() on the points that are left, the instance's points removed before
+// the next (the paper's purpose: the fitted equipment replaced by movable
+// models, the rest kept as the background).
 //
 // The scans' edges (Sec. 4) are detected once, before the first fit, with
 // the first model's edge options (and its mixed pixels removed first when
@@ -83,6 +83,13 @@ struct CellResult {
   double edge_seconds = 0.0;  // the one edge detection
   double seconds = 0.0;       // in all
 };
+
+// The order the models are looked for in: those whose base is found by its
+// cross sections (robots) before those found by their arm tips (conveyance
+// systems), each group in the order given. A conveyor looked for first took
+// the robots' tips for its own (the bar cell: not found) or, found, took a
+// robot's gun beside it as its attached parts (the ABB then not counted).
+std::vector<size_t> SearchOrder(const std::vector<CellModel>& models);
 
 // Whether a fit is an instance of its model: the base body ok and no body a
 // mismatch.
