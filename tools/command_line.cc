@@ -108,7 +108,8 @@ void PrintOverview() {
     std::printf("  %-8s %s\n", c.name, c.summary);
   }
   std::cout << "  help     this overview\n\n"
-               "`edgefit <command> --help` lists a command's flags.\n"
+               "`edgefit <command> --help` lists a command's flags; every command takes\n"
+               "--progress=auto|always|never (progress lines on stderr; auto: on a terminal).\n"
                "Exit codes: 0 success, 2 bad input (one line on stderr says what and where),\n"
                "1 internal failure.\n";
 }
