@@ -1,8 +1,9 @@
 // ChainFitter's ambiguity checks (extensions of Sec. 5.2): a joint whose
 // sweep found a near-equal runner-up, or whose sweep at the final values
 // prefers another basin, is fitted from there too as a branch, and the
-// lower Eq. (9) loss of the bodies the two place apart wins; a revolute
-// joint the scan does not pin down is flagged.
+// lower Eq. (9) loss of the bodies the two place apart wins (at the final
+// basins, a branch better only by showing more of surface both values
+// explain is none); a joint the scan does not pin down is flagged.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -80,6 +81,76 @@ double ChainFitter::BranchGain(const Pose& T_world_base, const std::vector<doubl
   const double loss = LinksLoss(T_world_base, q, apart, &placed_apart_samples, sweep);
   const double other_loss = LinksLoss(T_world_base, q_other, apart, &placed_apart_samples, sweep);
   return (loss - other_loss) / static_cast<double>(std::max<size_t>(samples, 1));
+}
+
+namespace {
+
+// Whether p lies within `reach` [m] of one of `points`.
+bool Near(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& points, double reach) {
+  const double reach2 = reach * reach;
+  for (const Eigen::Vector3d& x : points) {
+    if ((p - x).squaredNorm() < reach2) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ChainFitter::ViewComparison ChainFitter::CompareViews(const Pose& T_world_base,
+                                                     const std::vector<double>& q,
+                                                     const std::vector<double>& q_other,
+                                                     int link) const {
+  const std::vector<bool> below = SubtreeMask(link);
+  const std::vector<bool> apart = PlacedApart(T_world_base, q, q_other, below);
+  const std::vector<Pose> T[2] = {model_.ForwardKinematics(q, T_world_base),
+                                  model_.ForwardKinematics(q_other, T_world_base)};
+  const double tight = options_.explained_distance;
+  const double hidden_loss = options_.sweep.occluded_loss;
+  // Per value: the model's samples matched within `tight` (world), and the
+  // bodies placed apart's samples matched there but hidden at the other
+  // value, with the loss each saves against a hidden one.
+  std::vector<Eigen::Vector3d> matched[2], shown[2];
+  std::vector<double> saved[2];
+  size_t samples = 0;
+  double common = 0.0;
+  std::vector<float> loss[2];
+  for (size_t l = 0; l < T[0].size(); ++l) {
+    const SurfaceSamples& body = sweep_samples_[l];
+    if (below[l]) samples += body.size();
+    if (body.points.empty()) continue;
+    for (int v = 0; v < 2; ++v) sweep_->LossAt(body, T[v][l], options_.sweep, &loss[v]);
+    for (size_t i = 0; i < body.points.size(); ++i) {
+      const bool seen[2] = {loss[0][i] >= 0.0f, loss[1][i] >= 0.0f};
+      for (int v = 0; v < 2; ++v) {
+        if (!seen[v] || !(loss[v][i] < tight)) continue;
+        const Eigen::Vector3d p = T[v][l] * body.points[i].cast<double>();
+        matched[v].push_back(p);
+        if (below[l] && apart[l] && !seen[1 - v]) {
+          shown[v].push_back(p);
+          saved[v].push_back(hidden_loss - loss[v][i]);
+        }
+      }
+      if (below[l] && apart[l] && seen[0] && seen[1]) common += loss[0][i] - loss[1][i];
+    }
+  }
+  // A sample shown at one value only is evidence for it when no matched
+  // sample of the model at the other value lies near it (1.5 sweep
+  // spacings: the samples' gaps): surface the other leaves unmatched.
+  const double reach = 1.5 * samples_.sweep_spacing;
+  double evidence = common;
+  ViewComparison out;
+  out.shown = shown[1].size();
+  for (int v = 0; v < 2; ++v) {
+    for (size_t k = 0; k < shown[v].size(); ++k) {
+      if (Near(shown[v][k], matched[1 - v], reach)) continue;
+      evidence += v == 1 ? saved[v][k] : -saved[v][k];
+      if (v == 1) ++out.new_surface;
+    }
+  }
+  const double per_sample = 1.0 / static_cast<double>(std::max<size_t>(samples, 1));
+  out.common_gain = common * per_sample;
+  out.evidence_gain = evidence * per_sample;
+  return out;
 }
 
 double ChainFitter::CoveredMargin(const Pose& T_world_base, const std::vector<double>& q,
@@ -176,16 +247,33 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
     EDGEFIT_RETURN_IF_ERROR(
         FitBranch(T_world_base, i, best.q, *q, *records, &q_other, &other_records));
     const double gain = BranchGain(T_world_base, *q, q_other, j.child_link);
-    const bool elsewhere = gain > options_.ambiguity_mean_loss;
-    char line[400];
+    // Better only by showing more of surface both values explain (a jaw
+    // sliding along its own scanned shaft, its end hidden): the scan does not
+    // pin the joint between the two.
+    const ViewComparison views = CompareViews(T_world_base, *q, q_other, j.child_link);
+    const bool bound_exceeded = gain > options_.ambiguity_mean_loss;
+    const bool not_pinned = bound_exceeded && !(views.evidence_gain > options_.ambiguity_mean_loss);
+    const bool elsewhere = bound_exceeded && !not_pinned;
+    char line[480];
     std::snprintf(line, sizeof(line),
                   "final basins: %s = %.5f, but swept at the final values of the others %.5f "
                   "fits %.3f mm/sample better; with the joints below fitted again there (%s = "
-                  "%.5f) %.3f mm/sample %s%s",
+                  "%.5f) %.3f mm/sample %s; %.3f on the samples seen at both and those on "
+                  "surface the other leaves unmatched (%zu of the %zu it shows there only)%s",
                   j.name.c_str(), (*q)[jj], best.q, 1e3 * better, j.name.c_str(), q_other[jj],
                   1e3 * std::abs(gain), gain > 0.0 ? "better" : "worse",
-                  !elsewhere ? ": kept" : (take ? ": taken" : ": NOT OK"));
+                  1e3 * views.evidence_gain, views.new_surface, views.shown,
+                  not_pinned  ? ": NOT PINNED"
+                  : !elsewhere ? ": kept"
+                  : take       ? ": taken"
+                               : ": NOT OK");
     say_(line);
+    if (not_pinned) {
+      record.ambiguous = true;
+      record.alternative = q_other[jj];
+      record.margin = std::abs(views.evidence_gain);
+      continue;
+    }
     if (!elsewhere) continue;
     if (take) {
       // The branch's joints were fitted anew: what the earlier checks said

@@ -43,6 +43,7 @@ bool ChainOptions::IsValid(std::string* error) const {
     return fail("final_basin_revolute and final_basin_prismatic must be > 0");
   }
   if (final_basin_rounds < 0) return fail("final_basin_rounds must be >= 0");
+  if (!(explained_distance >= 0.0)) return fail("explained_distance must be >= 0");
   if (max_passes_after_switch < 0 || !(settle_tolerance_rad > 0.0) || !(settle_tolerance_m > 0.0)) {
     return fail("max_passes_after_switch must be >= 0 and the settle tolerances > 0");
   }

@@ -100,6 +100,13 @@ struct ChainOptions {
   // flipped wrist taken in the first round left the gun's jaw 42 mm off,
   // which only the second round's sweep saw. 0: only report.
   int final_basin_rounds = 2;
+  // CheckFinalBasins: a branch better by more than ambiguity_mean_loss per
+  // sample, but not on the evidence (CompareViews: the samples seen at
+  // both values and those matched within explained_distance [m] on surface
+  // the other value leaves unmatched), only shows more of surface both
+  // explain: the joint is not pinned between the two (ambiguous), not in a
+  // wrong basin.
+  double explained_distance = 0.003;
   // A revolute joint moved by pinning_revolute either way (the sweep's
   // distinct basins, JointSweepOptions::distinct_revolute) must cost on
   // average at least pinning_mean_loss per sample more [m], the bound of
@@ -189,8 +196,12 @@ class ChainFitter {
   // than ambiguity_mean_loss per sample of the subtree is another basin:
   // take = true moves *q there (*moved; refine the chain again), take =
   // false marks the record ambiguous and better_elsewhere with the
-  // branch's value as its alternative (the fit is not ok). A branch that
-  // is not better leaves the joint as it is. A taken branch clears what
+  // branch's value as its alternative (the fit is not ok). A branch better
+  // on the whole subtree but not on the evidence (CompareViews'
+  // evidence_gain) only shows more of surface both values explain: the scan
+  // does not pin the joint, which keeps its value and is ambiguous with the
+  // branch's value as its alternative. A branch that is not better leaves
+  // the joint as it is. A taken branch clears what
   // the earlier checks said of the joints below, except this joint's own
   // ambiguity when its alternative is another basin from the new value too.
   Status CheckFinalBasins(const Pose& T_world_base, bool take, std::vector<double>* q,
@@ -230,6 +241,24 @@ class ChainFitter {
   double BranchGain(const Pose& T_world_base, const std::vector<double>& q,
                     const std::vector<double>& q_other, int link,
                     const JointSweep* sweep = nullptr) const;
+  // What the bodies below `link` that q and q_other place apart show at
+  // each, per sample of the whole subtree (BranchGain's scale) [m]:
+  // common_gain is BranchGain on their samples a scanner sees at both
+  // values only; evidence_gain adds each sample matched within
+  // ChainOptions::explained_distance at one value and hidden at the other
+  // when no matched sample of the model at the other lies near it (surface
+  // only that value explains; for q_other, against q), and leaves out those
+  // that only show more of surface both explain. shown counts the samples
+  // matched at q_other and hidden at q, new_surface those of them on
+  // surface q leaves unmatched.
+  struct ViewComparison {
+    double common_gain = 0.0;
+    double evidence_gain = 0.0;
+    size_t shown = 0;
+    size_t new_surface = 0;
+  };
+  ViewComparison CompareViews(const Pose& T_world_base, const std::vector<double>& q,
+                              const std::vector<double>& q_other, int link) const;
   // The Eq. (9) loss of every link at or below `link` at joint values q;
   // *samples counts the sweep samples scored.
   double SubtreeLoss(const Pose& T_world_base, const std::vector<double>& q, int link,

@@ -37,33 +37,35 @@ JointSweep::JointSweep(const LatticeSearch* lattice, const ScanVisibility* visib
   CHECK(lattice_ != nullptr && visibility_ != nullptr);
 }
 
+double JointSweep::SampleLoss(const Eigen::Vector3d& p, const Eigen::Vector3d* n,
+                              const JointSweepOptions& options, bool* seen) const {
+  *seen = n == nullptr ||
+          visibility_->BestView(p, *n, options.visibility_tolerance, /*facing_only=*/false,
+                                options.max_view_gap) == ScanView::kSeen;
+  if (!*seen) return options.occluded_loss;
+  const float max_d2 = static_cast<float>(options.max_distance * options.max_distance);
+  const Correspondence m = lattice_->Nearest(p.cast<float>(), options.lattice_window, max_d2);
+  // A seen sample without a scan point within max_distance: D = max_distance, w = 1.
+  if (m.scan < 0) return SweepLoss(options.max_distance, 1.0, options.tau_dist);
+  const double w = std::max(1.0, static_cast<double>(m.weight));  // uniform: a search without weights
+  return SweepLoss(static_cast<double>(m.distance), w, options.tau_dist);
+}
+
 double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_link,
-                          const JointSweepOptions& options) const {
+                          const JointSweepOptions& options, std::vector<float>* losses) const {
   const Eigen::Matrix3d R = T_world_link.linear();
   const Eigen::Vector3d& t = T_world_link.translation();
   const bool have_normals = samples.normals.size() == samples.points.size();
-  const float max_d2 = static_cast<float>(options.max_distance * options.max_distance);
-  // A seen sample without a scan point within max_distance: D = max_distance, w = 1.
-  const double unmatched = SweepLoss(options.max_distance, 1.0, options.tau_dist);
+  if (losses != nullptr) losses->resize(samples.points.size());
   double loss = 0.0;
   for (size_t i = 0; i < samples.points.size(); ++i) {
     const Eigen::Vector3d p = R * samples.points[i].cast<double>() + t;
-    if (have_normals) {
-      const Eigen::Vector3d n = R * samples.normals[i].cast<double>();
-      if (visibility_->BestView(p, n, options.visibility_tolerance, /*facing_only=*/false,
-                                options.max_view_gap) != ScanView::kSeen) {
-        loss += options.occluded_loss;
-        continue;
-      }
-    }
-    const Correspondence m = lattice_->Nearest(p.cast<float>(), options.lattice_window, max_d2);
-    if (m.scan < 0) {
-      loss += unmatched;
-      continue;
-    }
-    const double w =
-        std::max(1.0, static_cast<double>(m.weight));  // uniform: a search without weights
-    loss += SweepLoss(static_cast<double>(m.distance), w, options.tau_dist);
+    const Eigen::Vector3d n = have_normals ? Eigen::Vector3d(R * samples.normals[i].cast<double>())
+                                           : Eigen::Vector3d::Zero();
+    bool seen = true;
+    const double l = SampleLoss(p, have_normals ? &n : nullptr, options, &seen);
+    loss += l;
+    if (losses != nullptr) (*losses)[i] = seen ? static_cast<float>(l) : -1.0f;
   }
   return loss;
 }

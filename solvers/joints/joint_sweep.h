@@ -83,9 +83,10 @@ class JointSweep {
 
   // The total loss of `samples` (link frame, with normals) with the link at
   // T_world_link; Loss at a joint value of `motion`. LossAt also scores
-  // free-link hypotheses (the base candidates of robot_fit). Thread-safe.
+  // free-link hypotheses (the base candidates of robot_fit). losses (may be
+  // null): each sample's loss, -1 for a hidden one. Thread-safe.
   double LossAt(const SurfaceSamples& samples, const Pose& T_world_link,
-                const JointSweepOptions& options) const;
+                const JointSweepOptions& options, std::vector<float>* losses = nullptr) const;
   double Loss(const SurfaceSamples& samples, const LinkMotion& motion, double q,
               const JointSweepOptions& options) const {
     return LossAt(samples, motion.PoseAt(q), options);
@@ -98,6 +99,11 @@ class JointSweep {
                const JointSweepOptions& options, JointSweepSummary* summary) const;
 
  private:
+  // One sample at world point p with world normal n (null: seen from
+  // everywhere): occluded_loss when hidden (*seen false), else Eq. (9).
+  double SampleLoss(const Eigen::Vector3d& p, const Eigen::Vector3d* n,
+                    const JointSweepOptions& options, bool* seen) const;
+
   const LatticeSearch* lattice_;
   const ScanVisibility* visibility_;
 };

@@ -2,8 +2,8 @@
 // link on a vertical revolute joint 1 m above the floor: the asymmetric L
 // link is found to the last refinement step with a clearly worse
 // runner-up; a box centred on the axis (2-fold symmetric) has a runner-up
-// half a turn away that costs about the same; the result does not depend
-// on the thread count.
+// half a turn away that costs about the same; each sample's loss marks the
+// hidden ones; the result does not depend on the thread count.
 #include "solvers/joints/joint_sweep.h"
 
 #include <glog/logging.h>
@@ -111,6 +111,38 @@ TEST(JointSweepTest, RangeOverATurnSweepsOneTurn) {
   EXPECT_GE(std::abs(std::remainder(summary.runner_up_q - summary.q, 2.0 * M_PI)),
             JointSweepOptions().distinct_revolute);
   EXPECT_LT(summary.evaluations, Sweep(scene).evaluations + 10);
+}
+
+// Each sample's loss (the common view of two values is compared sample by
+// sample): the hidden ones marked -1, the seen ones summing with
+// occluded_loss per hidden one to the total, at the true angle and turned.
+TEST(JointSweepTest, PerSampleLossesMarkTheHiddenAndSumToTheTotal) {
+  const SweepScene scene = ScanLink(testing_util::LinkMesh());
+  CorrespondenceSearch search(&scene.scans, nullptr);
+  const ScanVisibility visibility(&scene.scans);
+  const JointSweep sweep(&search.lattice(), &visibility);
+  const JointSweepOptions options;
+  for (const double q : {kTrueAngle, kTrueAngle + 0.5}) {
+    std::vector<float> losses;
+    const double total = sweep.Loss(scene.samples, Joint(), q, options);
+    EXPECT_EQ(sweep.LossAt(scene.samples, Joint().PoseAt(q), options, &losses), total);
+    ASSERT_EQ(losses.size(), scene.samples.size());
+    double sum = 0.0;
+    size_t hidden = 0;
+    for (const float l : losses) {
+      if (l < 0.0f) {
+        EXPECT_EQ(l, -1.0f);
+        ++hidden;
+        sum += options.occluded_loss;
+      } else {
+        sum += l;
+      }
+    }
+    // The link's underside faces the floor: hidden from every scanner.
+    EXPECT_GT(hidden, scene.samples.size() / 20) << q;
+    EXPECT_LT(hidden, scene.samples.size()) << q;
+    EXPECT_NEAR(sum, total, 1e-5 * total) << q;
+  }
 }
 
 TEST(JointSweepTest, SameResultForAnyThreadCount) {
