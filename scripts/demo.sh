@@ -5,7 +5,8 @@
 # by the virtual scanner's realistic sensor (mixed pixels, incidence noise
 # and dropouts, station residuals, as-built surfaces), its
 # edges are detected and scored against the scanner's ground truth, and the
-# robot is fitted to the scan (base pose and every joint), truth against fit.
+# robot is fitted to the scan (base pose and every joint), truth against fit,
+# with an HTML report of the fit.
 # Then the bundled conveyor (paper Sec. 6) the same way: scanned in its
 # `transfer` posture with accessories, fitted with --kind=auto (conveyance).
 set -euo pipefail
@@ -55,8 +56,10 @@ echo "   (Eq. 9 sweep + joint-constrained weighted ICP), the stations registered
 echo "   the whole chain refined without the jackets; truth against fit"
 "$edgefit" fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \
   --scan="$out/robot.ptx" --truth="$out/robot_truth.json" --out="$out/result.json" \
-  --out_joint_states="$out/joint_states.yaml" --out_urdf="$out/robot_fitted.urdf"
-echo "(result: $out/result.json; joint states: $out/joint_states.yaml; calibrated URDF: $out/robot_fitted.urdf)"
+  --out_joint_states="$out/joint_states.yaml" --out_urdf="$out/robot_fitted.urdf" \
+  --out_report="$out/robot_report.html"
+echo "(result: $out/result.json; joint states: $out/joint_states.yaml; calibrated URDF: $out/robot_fitted.urdf;"
+echo " open $out/robot_report.html in a browser: the scan against the fitted model, every joint's verdict)"
 echo
 echo "== the bundled conveyor (paper Sec. 6): posture transfer, accessories, 3 scanners, 3 mm spacing"
 "$edgefit" scan --urdf=assets/conveyor/conveyor.urdf --posture=assets/conveyor/postures.json:transfer \

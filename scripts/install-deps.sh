@@ -3,6 +3,7 @@
 # Idempotent: installs only what is missing. Needs root (or sudo) for apt-get.
 #   ./scripts/install-deps.sh            build + test dependencies
 #   EDGEFIT_WITH_CLOUDCOMPARE=0 ...      skip CloudCompare (used by one interop test)
+#   EDGEFIT_WITH_BROWSER=0 ...           skip Chromium (the report's page test skips)
 set -euo pipefail
 
 packages=(
@@ -13,6 +14,11 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
 )
+# The fit report embeds three.js; its test opens it in headless Chromium.
+packages+=(libjs-three)
+if [[ "${EDGEFIT_WITH_BROWSER:-1}" == "1" ]]; then
+  packages+=(chromium)
+fi
 if [[ "${EDGEFIT_WITH_CLOUDCOMPARE:-1}" == "1" ]]; then
   packages+=(cloudcompare xvfb)
 fi

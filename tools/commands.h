@@ -14,6 +14,7 @@ Command FitCommand();
 Command BatchCommand();
 Command BenchCommand();
 Command CellCommand();
+Command ReportCommand();
 
 }  // namespace edgefit::tools
 

@@ -20,6 +20,7 @@ const std::vector<Command>& AllCommands() {
       ScanCommand(),
       EdgesCommand(),
       FitCommand(),
+      ReportCommand(),
       CellCommand(),
       BatchCommand(),
       BenchCommand(),

@@ -5,13 +5,15 @@
 //               [--kind=auto|articulated|conveyance]
 //               [--weighting=edge|uniform] [--w_high=10] [--loss=trivial] [--lambda=1]
 //               [--init=x,y,yaw_deg] [--truth=T.json] [--out_joint_states=J.yaml]
-//               [--out_urdf=U.urdf] [--out_ply=M.ply] [--out_background=B.ptx|B.e57]
+//               [--out_urdf=U.urdf] [--out_ply=M.ply] [--out_report=R.html]
+//               [--out_background=B.ptx|B.e57]
 //               [--threads=N] [--seed=N]
 #include <omp.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -29,6 +31,7 @@
 #include "edgefit/pipeline/instance_crop.h"
 #include "edgefit/pipeline/model_points.h"
 #include "edgefit/pipeline/result_json.h"
+#include "edgefit/report/fit_report.h"
 #include "edgefit/scanner/truth.h"
 #include "fit_flags.h"
 
@@ -38,6 +41,10 @@ DEFINE_string(out_joint_states, "",
 DEFINE_string(out_urdf, "",
               "Optional output: the model with a world link and a fixed joint at "
               "the fitted base pose (joint values in a comment).");
+
+DEFINE_string(out_report, "",
+              "Optional output: a self-contained HTML report (.html): the scan against the "
+              "fitted model in 3D, coloured by distance, with every joint's value and verdict.");
 
 DEFINE_string(out_background, "",
               "Optional output: the scan with the fitted model's points removed (.ptx, .pcd, "
@@ -80,6 +87,33 @@ std::string JointStatesYaml(const KinematicModel& model, const std::vector<doubl
          positions.str() + "]\nvelocity: []\neffort: []\n";
 }
 
+// What the fit read, as absolute paths: enough for `edgefit report` to
+// load the model and the scans again.
+json FitInputsJson(const std::vector<AttachSpec>& specs, const Eigen::AlignedBox3d* roi) {
+  namespace fs = std::filesystem;
+  json attach = json::array();
+  for (const AttachSpec& a : specs) {
+    std::string spec = fs::absolute(a.path).string() + "@" + a.parent_link;
+    if (!a.T_parent_root.isApprox(Pose::Identity())) {
+      const Eigen::Vector3d t = a.T_parent_root.translation();
+      const Eigen::Vector3d rpy = RpyFromRotation(a.T_parent_root.linear());
+      char pose[200];
+      std::snprintf(pose, sizeof(pose), ":%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", t.x(), t.y(),
+                    t.z(), rpy.x(), rpy.y(), rpy.z());
+      spec += pose;
+    }
+    attach.push_back(spec);
+  }
+  json scan = json::array();
+  for (const std::string& path : SplitList(FLAGS_scan)) scan.push_back(fs::absolute(path).string());
+  json inputs = {{"urdf", fs::absolute(FLAGS_urdf).string()}, {"attach", attach}, {"scan", scan}};
+  if (roi != nullptr) {
+    inputs["roi"] = {roi->min().x(), roi->min().y(), roi->min().z(),
+                     roi->max().x(), roi->max().y(), roi->max().z()};
+  }
+  return inputs;
+}
+
 int RunFit(const Command& command) {
   if (FLAGS_urdf.empty()) return BadInput(command, "--urdf is required");
   if (FLAGS_scan.empty()) return BadInput(command, "--scan is required");
@@ -90,7 +124,10 @@ int RunFit(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());  // before any file is read
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, CheckOutputPaths({FLAGS_out, FLAGS_out_joint_states, FLAGS_out_urdf, FLAGS_out_ply,
-                                 FLAGS_out_background}));
+                                 FLAGS_out_report, FLAGS_out_background}));
+  if (!FLAGS_out_report.empty()) {
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitReportScripts(FitReportOptions()));
+  }
   Eigen::AlignedBox3d roi;
   bool has_roi = false;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, RoiFromFlags(&roi, &has_roi));
@@ -145,6 +182,7 @@ int RunFit(const Command& command) {
 
   json result = FitResultJson(model, kind, options, fit);
   result["timing_s"]["load"] = load_seconds;
+  result["inputs"] = FitInputsJson(specs, has_roi ? &roi : nullptr);
   if (scored_asset >= 0) {
     json e = json::object();
     for (const JointError& j : errors.joints) e[j.name] = j.error;
@@ -191,6 +229,19 @@ int RunFit(const Command& command) {
         FLAGS_out_ply, mesh, "edgefit fit: " + FLAGS_urdf + " at the fitted pose, world frame");
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_ply);
+  }
+  if (!FLAGS_out_report.empty()) {  // before the background takes the model's points away
+    Progress("report: the scan against the fitted model");
+    json shown = result;
+    shown["timing_s"]["total"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::vector<Pose> corrections;  // the stations as the fit registered them
+    for (const StationCorrection& c : fit.stations.stations) corrections.push_back(c.correction);
+    const Status status =
+        WriteFitReport(model, fit.q, fit.T_world_base, has_roi ? in_roi : scans, corrections,
+                       shown, "edgefit fit: " + FLAGS_urdf, FitReportOptions(), FLAGS_out_report);
+    if (!status.ok()) return fail(status);
+    written.push_back(FLAGS_out_report);
   }
   if (!FLAGS_out_background.empty()) {
     Progress("background: removing the fitted model's points");
@@ -288,14 +339,14 @@ Command FitCommand() {
       "              [--parameterization=joint_space|pose_penalty] [--norefine_chain]\n"
       "              [--init=x,y,yaw_deg] [--roi=xmin,ymin,zmin,xmax,ymax,zmax]\n"
       "              [--truth=T.json] [--out_joint_states=J.yaml] [--out_urdf=U.urdf]\n"
-      "              [--out_ply=M.ply] [--out_background=B.ptx] [--background_distance_mm=8]\n"
-      "              [--threads=N] [--seed=N]\n"
+      "              [--out_ply=M.ply] [--out_report=R.html] [--out_background=B.ptx]\n"
+      "              [--background_distance_mm=8] [--threads=N] [--seed=N]\n"
       "Example:\n"
       "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
       "    --scan=robot.ptx --truth=robot_truth.json --out=result.json\n"
       "  edgefit fit --urdf=assets/conveyor/conveyor.urdf --scan=conveyor.ptx --out=result.json",
       WithFitOptionFlags({"urdf", "attach", "scan", "out", "kind", "init", "roi", "truth",
-                          "out_joint_states", "out_urdf", "out_ply", "out_background",
+                          "out_joint_states", "out_urdf", "out_ply", "out_report", "out_background",
                           "background_distance_mm", "threads", "seed"}),
       &RunFit};
 }

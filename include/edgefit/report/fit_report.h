@@ -1,0 +1,65 @@
+// The fit report (`edgefit fit --out_report`): one self-contained HTML file
+// that opens offline from any folder and shows a fit so that a person can
+// judge it at a glance: the scan around the asset, thinned, each point
+// coloured by its distance to the fitted model (points far from it, such as
+// accessories, jackets and the surroundings, stand out in grey); the fitted
+// meshes, which can be toggled; the verdict, and per joint its value,
+// verdict, standard deviation and, with a truth, its error; the stage
+// timings and the options. The 3D view is WebGL through three.js, embedded
+// from Debian's libjs-three (read when the report is written).
+#ifndef EDGEFIT_REPORT_FIT_REPORT_H_
+#define EDGEFIT_REPORT_FIT_REPORT_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/scan/organized_scan.h"
+
+namespace edgefit {
+
+struct FitReportOptions {
+  // Points shown at most: the valid cells near the model, every k-th
+  // (deterministic). 300 000 points keep the page near 10 MB and fluid.
+  size_t max_points = 300000;
+  // Points within this of the fitted model's bounding box are shown [m].
+  double margin = 0.3;
+  // Colours: distance 0 green through yellow to red at residual_scale [m];
+  // beyond not_modelled grey (the scan there is not the model) [m].
+  double residual_scale = 0.005;
+  double not_modelled = 0.015;
+  // The model's surface samples the distances are measured to [m].
+  double sample_spacing = 0.003;
+  uint64_t seed = 1;
+  // Where Debian's libjs-three installs three.min.js and
+  // examples/js/controls/OrbitControls.js.
+  std::string three_js_dir = "/usr/share/javascript/three";
+
+  bool IsValid(std::string* error) const;
+};
+
+// Whether three.js is where options.three_js_dir says (check before a fit
+// whose report is asked for).
+Status CheckFitReportScripts(const FitReportOptions& options);
+
+// Writes the report of `result` (result.json of the fit) for the model at
+// (q, T_world_base) over `scans` to `path`, atomically; each scan placed
+// by its station's correction (station_corrections, scan order, as the fit
+// registered them: T_world_scanner = correction * written; empty: as
+// written). Fails (nothing written) on invalid options, q or corrections of
+// the wrong size, three.js missing, or the file not writable.
+Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
+                      const Pose& T_world_base, const ScanSet& scans,
+                      const std::vector<Pose>& station_corrections, const nlohmann::json& result,
+                      const std::string& title, const FitReportOptions& options,
+                      const std::string& path);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_REPORT_FIT_REPORT_H_

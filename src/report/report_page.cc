@@ -1,0 +1,310 @@
+#include "report_page.h"
+
+#include <string>
+
+namespace edgefit {
+namespace {
+
+// Text safe inside an HTML element.
+std::string EscapeHtml(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// A script's text safe inside <script>: no "</" that could close it.
+std::string EscapeScript(const std::string& script) {
+  std::string out;
+  out.reserve(script.size());
+  for (size_t i = 0; i < script.size(); ++i) {
+    out += script[i];
+    if (script[i] == '<' && i + 1 < script.size() && script[i + 1] == '/') out += "\\";
+  }
+  return out;
+}
+
+constexpr char kStyle[] = R"css(
+body { font: 14px/1.4 sans-serif; margin: 0; color: #222; }
+header { padding: 10px 16px; background: #f4f4f4; border-bottom: 1px solid #ddd; }
+h1 { font-size: 18px; margin: 0 0 4px; }
+h2 { font-size: 15px; margin: 18px 0 6px; }
+.ok { color: #17803a; font-weight: bold; }
+.bad { color: #b3261e; font-weight: bold; }
+main { display: flex; flex-wrap: wrap; }
+#view { position: relative; flex: 1 1 640px; min-width: 480px; height: 620px; background: #fff; }
+#controls { position: absolute; top: 8px; left: 8px; background: rgba(255,255,255,.85);
+            padding: 6px 8px; border: 1px solid #ccc; border-radius: 4px; }
+#legend { position: absolute; bottom: 8px; right: 8px; max-width: 250px; background: rgba(255,255,255,.85);
+          padding: 6px 8px; border: 1px solid #ccc; border-radius: 4px; font-size: 11px; }
+#legend canvas { display: block; margin: 3px 0; }
+#side { flex: 1 1 420px; padding: 0 16px 16px; max-height: 640px; overflow-y: auto; }
+table { border-collapse: collapse; font-size: 13px; }
+td, th { border-bottom: 1px solid #e3e3e3; padding: 2px 8px; text-align: right; }
+td:first-child, th:first-child { text-align: left; }
+.verdict-ok { color: #17803a; } .verdict-bad { color: #b3261e; }
+#status { font-size: 11px; color: #888; padding: 4px 16px; }
+.histograms { display: flex; flex-wrap: wrap; gap: 8px; }
+.histograms figure { margin: 0; font-size: 12px; }
+)css";
+
+constexpr char kScript[] = R"js(
+'use strict';
+const status = document.getElementById('status');
+window.addEventListener('error', e => { status.textContent = 'error: ' + e.message; });
+const data = JSON.parse(document.getElementById('data').textContent);
+const result = data.result;
+
+function decode(b64, Type) {
+  const bytes = Uint8Array.from(atob(b64), c => c.charCodeAt(0));
+  return new Type(bytes.buffer);
+}
+function el(tag, attrs, text) {
+  const e = document.createElement(tag);
+  for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+function fmt(x, digits) { return (x === null || x === undefined || !isFinite(x)) ? '–' : x.toFixed(digits); }
+
+// Distance colour: green at 0, yellow at half the scale, red at the scale;
+// grey beyond not_modelled (the scan there is not the model).
+const scale = data.colours.residual_scale_m, farAway = data.colours.not_modelled_m;
+function colour(d, out, i) {
+  if (d > farAway) { out[i] = out[i + 1] = out[i + 2] = 0.62; return; }
+  const t = Math.min(d / scale, 1);
+  out[i] = t < 0.5 ? 2 * t : 1; out[i + 1] = t < 0.5 ? 0.75 + 0.25 * 2 * t : 2 * (1 - t); out[i + 2] = 0.1;
+}
+
+// Header: verdict and base.
+const q = result.quality || {};
+document.getElementById('verdict').innerHTML = '';
+document.getElementById('verdict').append(
+    el('span', {class: q.ok ? 'ok' : 'bad'}, q.ok ? 'fit ok' : 'fit NOT ok'),
+    document.createTextNode(q.message ? ': ' + q.message : ''));
+if (result.base) {
+  const b = result.base, deg = 180 / Math.PI;
+  document.getElementById('base').textContent =
+      'base: xyz ' + b.xyz.map(v => fmt(v, 4)).join(' ') + ' m, rpy ' +
+      b.rpy.map(v => fmt(v * deg, 3)).join(' ') + ' deg' +
+      (result.errors ? '; error ' + fmt(result.errors.base_translation_m * 1e3, 2) + ' mm, ' +
+       fmt(result.errors.base_rotation_rad * deg, 4) + ' deg (survey frame ' +
+       fmt(result.errors.base_survey_translation_m * 1e3, 2) + ' mm)' : '');
+}
+
+// Joints: value, verdict, standard deviation, error against a truth.
+(function joints() {
+  const table = document.getElementById('joints');
+  const errors = result.errors ? result.errors.joints : null;
+  const head = ['joint', 'value', 'verdict', 'std', ...(errors ? ['error'] : [])];
+  const tr = el('tr'); head.forEach(h => tr.append(el('th', {}, h))); table.append(tr);
+  for (const name of Object.keys(result.joints || {})) {
+    const prismatic = data.joint_types[name] === 'prismatic';
+    const f = prismatic ? 1e3 : 180 / Math.PI, unit = prismatic ? ' mm' : '°';
+    const st = (result.joint_status || {})[name];
+    const verdict = st ? st.verdict : 'dependent';
+    const row = el('tr');
+    row.append(el('td', {}, name), el('td', {}, fmt(result.joints[name] * f, 4) + unit),
+               el('td', {class: verdict === 'ok' || verdict === 'unobservable' || verdict === 'dependent'
+                                    ? 'verdict-ok' : 'verdict-bad'}, verdict),
+               el('td', {}, st && st.std !== null && st.std !== undefined ? fmt(st.std * f, 4) + unit : '–'));
+    if (errors) row.append(el('td', {}, name in errors ? fmt(errors[name] * f, 4) + unit : '–'));
+    table.append(row);
+  }
+})();
+
+// Per link: what the verdict rests on.
+(function links() {
+  const per = q.per_link || {};
+  const table = document.getElementById('links');
+  const tr = el('tr');
+  ['link', 'visible samples', 'within gate', 'RMS', 'verdict'].forEach(h => tr.append(el('th', {}, h)));
+  table.append(tr);
+  for (const name of Object.keys(per)) {
+    const l = per[name];
+    const row = el('tr');
+    row.append(el('td', {}, name), el('td', {}, String(l.visible)),
+               el('td', {}, fmt(100 * l.inlier_share, 1) + ' %'), el('td', {}, fmt(l.rms_m * 1e3, 2) + ' mm'),
+               el('td', {class: l.ok ? 'verdict-ok' : 'verdict-bad'}, l.verdict));
+    table.append(row);
+  }
+})();
+
+// Stage timings and options.
+(function timings() {
+  const table = document.getElementById('timings');
+  for (const [stage, s] of Object.entries(result.timing_s || {})) {
+    const row = el('tr'); row.append(el('td', {}, stage), el('td', {}, fmt(s, 2) + ' s')); table.append(row);
+  }
+  document.getElementById('options').textContent = JSON.stringify(result.options || {}, null, 1);
+})();
+
+// The scan's points near the model, coloured by distance.
+const pts = data.points;
+const positions = decode(pts.positions, Float32Array);
+const dist = decode(pts['distance_0.1mm'], Uint16Array);
+const linkOf = decode(pts.link, Uint16Array);
+document.getElementById('pointinfo').textContent =
+    pts.count + ' of the ' + pts.near + ' scan points within the model\'s box (every ' + pts.stride + ')';
+
+// Residual histograms per link: points nearest the link, within not_modelled.
+(function histograms() {
+  const bins = 20, binWidth = farAway / bins, counts = {}, far = {};
+  for (let i = 0; i < dist.length; ++i) {
+    const name = data.link_names[linkOf[i]], d = dist[i] * 1e-4;
+    counts[name] = counts[name] || new Array(bins).fill(0);
+    if (d >= farAway) { far[name] = (far[name] || 0) + 1; continue; }
+    counts[name][Math.floor(d / binWidth)]++;
+  }
+  const box = document.getElementById('histograms');
+  for (const name of Object.keys(counts).sort()) {
+    const c = counts[name], total = c.reduce((a, b) => a + b, 0);
+    if (total < 50) continue;
+    const fig = el('figure'), canvas = el('canvas', {width: 160, height: 60});
+    const g = canvas.getContext('2d'), top = Math.max(...c);
+    for (let b = 0; b < bins; ++b) {
+      const rgb = [0, 0, 0]; colour((b + 0.5) * binWidth, rgb, 0);
+      g.fillStyle = 'rgb(' + rgb.map(v => Math.round(255 * v)).join(',') + ')';
+      const h = 56 * c[b] / top; g.fillRect(b * 8, 58 - h, 7, h);
+    }
+    fig.append(canvas, el('figcaption', {}, name + ': ' + total + ' points' +
+                                           (far[name] ? ', ' + far[name] + ' farther' : '')));
+    box.append(fig);
+  }
+  document.getElementById('histrange').textContent = '0 to ' + fmt(farAway * 1e3, 0) + ' mm';
+})();
+
+// The 3D view.
+const view = document.getElementById('view');
+const renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+renderer.setPixelRatio(window.devicePixelRatio || 1);
+renderer.setSize(view.clientWidth, view.clientHeight);
+view.prepend(renderer.domElement);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0xffffff);
+scene.add(new THREE.HemisphereLight(0xffffff, 0x666666, 0.9));
+const sun = new THREE.DirectionalLight(0xffffff, 0.5); sun.position.set(1, 2, 3); scene.add(sun);
+
+const colours = new Float32Array(positions.length);
+for (let i = 0; i < dist.length; ++i) colour(dist[i] * 1e-4, colours, 3 * i);
+const cloudGeometry = new THREE.BufferGeometry();
+cloudGeometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+cloudGeometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+const cloud = new THREE.Points(cloudGeometry, new THREE.PointsMaterial({size: 2, sizeAttenuation: false, vertexColors: true}));
+scene.add(cloud);
+
+const model = new THREE.Group();
+const material = new THREE.MeshLambertMaterial({color: 0x4a78c2, transparent: true, opacity: 0.45,
+                                                side: THREE.DoubleSide, depthWrite: false});
+for (const link of data.links) {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(decode(link.positions, Float32Array), 3));
+  g.setIndex(new THREE.BufferAttribute(decode(link.indices, Uint32Array), 1));
+  g.computeVertexNormals();
+  const mesh = new THREE.Mesh(g, material); mesh.name = link.name; model.add(mesh);
+}
+scene.add(model);
+
+const bounds = new THREE.Box3().setFromObject(model);
+const centre = bounds.getCenter(new THREE.Vector3()), size = bounds.getSize(new THREE.Vector3()).length();
+const camera = new THREE.PerspectiveCamera(40, view.clientWidth / view.clientHeight, size / 100, size * 100);
+camera.up.set(0, 0, 1);
+const toward = data.scanners.length ? new THREE.Vector3(...data.scanners[0]).sub(centre).normalize()
+                                    : new THREE.Vector3(1, -1, 0.5).normalize();
+camera.position.copy(centre).addScaledVector(toward, 1.4 * size);
+const controls = new THREE.OrbitControls(camera, renderer.domElement);
+controls.target.copy(centre);
+controls.update();
+
+function render() {
+  cloud.visible = document.getElementById('show-scan').checked;
+  model.visible = document.getElementById('show-model').checked;
+  const farOnly = document.getElementById('far-only').checked;
+  cloud.material.size = farOnly ? 3 : 2;
+  if (farOnly !== render.farOnly) {
+    const sizes = farOnly ? dist.map(d => d * 1e-4 > farAway) : null;
+    const c = cloudGeometry.getAttribute('color');
+    for (let i = 0; i < dist.length; ++i) {
+      if (farOnly && !sizes[i]) c.array[3 * i] = c.array[3 * i + 1] = c.array[3 * i + 2] = 0.93;
+      else colour(dist[i] * 1e-4, c.array, 3 * i);
+    }
+    c.needsUpdate = true;
+    render.farOnly = farOnly;
+  }
+  renderer.render(scene, camera);
+}
+for (const id of ['show-scan', 'show-model', 'far-only']) document.getElementById(id).addEventListener('change', render);
+controls.addEventListener('change', render);
+window.addEventListener('resize', () => {
+  camera.aspect = view.clientWidth / view.clientHeight; camera.updateProjectionMatrix();
+  renderer.setSize(view.clientWidth, view.clientHeight); render();
+});
+render();
+
+// Legend.
+(function legend() {
+  const canvas = document.getElementById('colourbar'), g = canvas.getContext('2d'), rgb = [0, 0, 0];
+  for (let x = 0; x < canvas.width; ++x) {
+    colour(scale * x / (canvas.width - 1), rgb, 0);
+    g.fillStyle = 'rgb(' + rgb.map(v => Math.round(255 * v)).join(',') + ')';
+    g.fillRect(x, 0, 1, canvas.height);
+  }
+  document.getElementById('scalemax').textContent = fmt(scale * 1e3, 0) + ' mm';
+  document.getElementById('farlabel').textContent = 'grey: farther than ' + fmt(farAway * 1e3, 0) +
+      ' mm from the model (not the model: accessories, jackets, surroundings)';
+})();
+
+// What the view drew, for whoever checks the page without eyes.
+const gl = renderer.getContext(), w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+const pixels = new Uint8Array(4 * w * h);
+gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+let drawn = 0;
+for (let i = 0; i < pixels.length; i += 4) drawn += (pixels[i] & pixels[i + 1] & pixels[i + 2]) !== 255;
+if (!status.textContent.startsWith('error')) status.textContent = 'ok: ' + drawn + ' pixels drawn';
+)js";
+
+}  // namespace
+
+std::string ReportPage(const std::string& title, const std::string& three_js,
+                       const std::string& orbit_controls_js, const std::string& data_json) {
+  const std::string t = EscapeHtml(title);
+  std::string page;
+  page.reserve(data_json.size() + three_js.size() + orbit_controls_js.size() + 20000);
+  page += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" + t +
+          "</title>\n<style>" + kStyle + "</style></head>\n<body>\n";
+  page += "<header><h1>" + t + "</h1><div id=\"verdict\"></div><div id=\"base\"></div></header>\n";
+  page += R"html(<main>
+<div id="view">
+ <div id="controls">
+  <label><input type="checkbox" id="show-model" checked> fitted model</label><br>
+  <label><input type="checkbox" id="show-scan" checked> scan</label><br>
+  <label><input type="checkbox" id="far-only"> only points far from the model</label>
+ </div>
+ <div id="legend">distance to the fitted model: 0 <canvas id="colourbar" width="160" height="10"></canvas>
+  <span id="scalemax"></span> and more<br><span id="farlabel"></span><br><span id="pointinfo"></span></div>
+</div>
+<div id="side">
+ <h2>Joints</h2><table id="joints"></table>
+ <h2>Links</h2><table id="links"></table>
+ <h2>Residuals per link (<span id="histrange"></span>)</h2><div class="histograms" id="histograms"></div>
+ <h2>Stage timings</h2><table id="timings"></table>
+ <h2>Options</h2><pre id="options"></pre>
+</div>
+</main>
+<div id="status">loading</div>
+)html";
+  page += "<script type=\"application/json\" id=\"data\">" + EscapeScript(data_json) + "</script>\n";
+  page += "<script>" + EscapeScript(three_js) + "</script>\n";
+  page += "<script>" + EscapeScript(orbit_controls_js) + "</script>\n";
+  page += std::string("<script>") + kScript + "</script>\n</body></html>\n";
+  return page;
+}
+
+}  // namespace edgefit

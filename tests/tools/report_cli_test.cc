@@ -1,0 +1,97 @@
+// edgefit fit --out_report and edgefit report, tested as a person would use
+// them: the report opens offline in headless Chromium (Debian's chromium,
+// software WebGL) without a script error, draws the scan and the model, and
+// shows the joint table (that part skipped when chromium is not installed).
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+
+#include "tools/cli_fixture.h"
+
+namespace {
+
+using edgefit_cli_test::CliTest;
+using edgefit_cli_test::RunResult;
+using edgefit_cli_test::Slurp;
+namespace fs = std::filesystem;
+
+const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
+
+TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
+  const std::string scan = Path("arm.ptx"), truth = Path("truth.json");
+  ASSERT_EQ(Run("scan --urdf=" + kModel + " --scanners=2 --accessories --out=" + scan +
+                " --truth=" + truth)
+                .exit_code,
+            0);
+  // The report in a folder of its own: it needs no file beside it.
+  fs::create_directories(Path("report"));
+  const std::string report = Path("report/arm report.html");
+  const RunResult r = Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
+                          " --out=" + Path("result.json") + " --out_report='" + report + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string html = Slurp(report);
+  ASSERT_FALSE(html.empty());
+  EXPECT_EQ(html.find("src=\""), std::string::npos) << "the page loads no file";
+  EXPECT_EQ(html.find("href=\""), std::string::npos) << "the page links no file";
+
+  if (std::system("command -v chromium >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "chromium is not installed (./scripts/install-deps.sh installs it)";
+  }
+  const std::string dom = Path("dom.html");
+  const std::string browse =
+      "cd '" + Path("report") + "' && timeout 120 chromium --headless --no-sandbox "
+      "--use-angle=swiftshader --enable-unsafe-swiftshader --window-size=1280,800 "
+      "--user-data-dir='" + Path("profile") + "' --dump-dom 'file://" + report + "' >" + dom +
+      " 2>" + Path("chromium.log");
+  ASSERT_EQ(std::system(browse.c_str()), 0) << Slurp(Path("chromium.log"));
+  const std::string page = Slurp(dom);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(page, m, std::regex("<div id=\"status\">([^<]*)</div>")));
+  const std::string status = m[1];
+  ASSERT_TRUE(std::regex_match(status, m, std::regex("ok: ([0-9]+) pixels drawn"))) << status;
+  EXPECT_GT(std::stoi(m[1]), 20000) << "the 3D view is nearly blank";
+  // The tables the script built from the result.
+  for (const char* text : {"joint_1", "joint_2", "piston_joint", "fit ok", "link_2"}) {
+    EXPECT_NE(page.find(text), std::string::npos) << text;
+  }
+}
+
+// edgefit report makes the same report from result.json, whose inputs
+// (absolute paths) name the model and scans: from any folder.
+TEST_F(CliTest, ReportFromResultJson) {
+  const std::string scan = Path("arm.ptx");
+  ASSERT_EQ(
+      Run("scan --urdf=" + kModel + " --scanners=2 --out=" + scan + " --truth=" + Path("t.json"))
+          .exit_code,
+      0);
+  ASSERT_EQ(Run("fit --urdf=" + kModel + " --scan=" + scan + " --out=" + Path("result.json"))
+                .exit_code,
+            0);
+  const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
+  EXPECT_EQ(result["inputs"]["urdf"], kModel);
+  EXPECT_EQ(result["inputs"]["scan"][0], scan);
+  const RunResult r = Run("report --result=" + Path("result.json") + " --out=" + Path("r.html"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string html = Slurp(Path("r.html"));
+  EXPECT_NE(html.find("\"joint_2\""), std::string::npos);
+  EXPECT_NE(html.find("THREE.OrbitControls"), std::string::npos);
+  // Not a fit's result: bad input, nothing written.
+  ExpectBadInput("report --result=" + Path("result.json") + "x --out=" + Path("x.html"),
+                 "result.jsonx");
+  Write("other.json", "{\"joints\": {}}");
+  ExpectBadInput("report --result=" + Path("other.json") + " --out=" + Path("x.html"),
+                 "other.json: not a result.json of edgefit fit");
+  EXPECT_FALSE(fs::exists(Path("x.html")));
+}
+
+TEST_F(CliTest, FitReportToAMissingFolderIsBadInputBeforeTheFit) {
+  const std::string report = Path("no_such_folder/r.html");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + std::string(EDGEFIT_SOURCE_DIR) +
+                     "/assets/samples/two_scans.ptx --out=" + Path("r.json") +
+                     " --out_report=" + report,
+                 "no_such_folder");
+  EXPECT_FALSE(fs::exists(Path("r.json")));
+}
+
+}  // namespace

@@ -1,0 +1,152 @@
+// edgefit report: the HTML report of a fit from its result.json, whose
+// "inputs" (written by edgefit fit) name the model and the scans it read.
+//   edgefit report --result=result.json --out=report.html
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "command_line.h"
+#include "commands.h"
+#include "common_flags.h"
+#include "edgefit/core/atomic_file.h"
+#include "edgefit/io/scan_io.h"
+#include "edgefit/model/composition.h"
+#include "edgefit/model/urdf_loader.h"
+#include "edgefit/report/fit_report.h"
+
+DEFINE_string(result, "", "report: result.json of edgefit fit.");
+
+namespace edgefit::tools {
+namespace {
+
+using nlohmann::json;
+
+// A 4 x 4 rigid transform from its rows (PoseRows).
+Status PoseFromRows(const json& rows, const std::string& what, Pose* T) {
+  bool ok = rows.is_array() && rows.size() == 4;
+  Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
+  for (int r = 0; ok && r < 4; ++r) {
+    ok = rows[r].is_array() && rows[r].size() == 4;
+    for (int c = 0; ok && c < 4; ++c) {
+      ok = rows[r][c].is_number() && std::isfinite(rows[r][c].get<double>());
+      if (ok) m(r, c) = rows[r][c].get<double>();
+    }
+  }
+  const Eigen::Matrix3d R = m.topLeftCorner<3, 3>();
+  if (!ok || !(R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-6)) {
+    return Status::Error(what + ": not a 4 x 4 rigid transform");
+  }
+  T->matrix() = m;
+  return Status::Ok();
+}
+
+// The fit's model, joint values, base and station corrections from result.json.
+Status ReadFit(const json& result, const std::string& path, KinematicModel* model,
+               std::vector<double>* q, Pose* T_world_base, std::vector<Pose>* corrections,
+               std::vector<std::string>* scans) {
+  if (!result.is_object() || !result.contains("inputs") || !result.contains("joints") ||
+      !result.contains("base")) {
+    return Status::Error(path + ": not a result.json of edgefit fit with its inputs "
+                                "(\"inputs\", \"joints\", \"base\")");
+  }
+  const json& inputs = result["inputs"];
+  if (!inputs.contains("urdf") || !inputs["urdf"].is_string() || !inputs.contains("scan") ||
+      !inputs["scan"].is_array() || inputs["scan"].empty()) {
+    return Status::Error(path + ": inputs.urdf or inputs.scan missing");
+  }
+  std::string attach;
+  for (const json& a : inputs.value("attach", json::array())) {
+    if (!a.is_string()) return Status::Error(path + ": inputs.attach holds a non-string");
+    attach += (attach.empty() ? "" : ",") + a.get<std::string>();
+  }
+  std::vector<AttachSpec> specs;
+  EDGEFIT_RETURN_IF_ERROR(ParseAttachSpecList(attach, &specs));
+  EDGEFIT_RETURN_IF_ERROR(
+      LoadModelWithAttachments(inputs["urdf"].get<std::string>(), specs, ModelLoadOptions(), model));
+  q->assign(model->joints().size(), 0.0);
+  for (size_t j = 0; j < model->joints().size(); ++j) {
+    const Joint& joint = model->joints()[j];
+    if (!joint.IsMoving()) continue;
+    const json& v = result["joints"].value(joint.name, json());
+    if (!v.is_number()) {
+      return Status::Error(path + ": joint '" + joint.name + "' of " +
+                           inputs["urdf"].get<std::string>() + " has no value");
+    }
+    (*q)[j] = v.get<double>();
+  }
+  EDGEFIT_RETURN_IF_ERROR(
+      PoseFromRows(result["base"].value("T_world_base", json()), path + ": base.T_world_base",
+                   T_world_base));
+  corrections->clear();
+  if (result.contains("stations") && result["stations"].value("aligned", false)) {
+    for (const json& c : result["stations"].value("corrections", json::array())) {
+      Pose T;
+      EDGEFIT_RETURN_IF_ERROR(
+          PoseFromRows(c.value("T_correction", json()), path + ": stations.corrections", &T));
+      corrections->push_back(T);
+    }
+  }
+  for (const json& s : inputs["scan"]) {
+    if (!s.is_string()) return Status::Error(path + ": inputs.scan holds a non-string");
+    scans->push_back(s.get<std::string>());
+  }
+  return Status::Ok();
+}
+
+int Run(const Command& command) {
+  if (FLAGS_result.empty()) return BadInput(command, "--result is required");
+  if (FLAGS_out.empty()) return BadInput(command, "--out is required");
+  const FitReportOptions options;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out}));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitReportScripts(options));
+  std::string text;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(FLAGS_result, &text));
+  const json result = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (result.is_discarded()) return BadInput(command, FLAGS_result + ": not JSON");
+  KinematicModel model;
+  std::vector<double> q;
+  Pose T_world_base;
+  std::vector<Pose> corrections;
+  std::vector<std::string> scan_paths;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, ReadFit(result, FLAGS_result, &model, &q, &T_world_base, &corrections, &scan_paths));
+  ScanSet scans;
+  for (const std::string& path : scan_paths) {
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
+  }
+  if (result["inputs"].contains("roi")) {
+    // The fit saw the box only, and registered its stations on that crop:
+    // the corrections still hold per scan.
+    Progress("report: the fit's --roi is not applied; the report shows the scans near the model");
+  }
+  if (!corrections.empty() && corrections.size() != scans.scans.size()) {
+    return BadInput(command, FLAGS_result + ": " + std::to_string(corrections.size()) +
+                                 " station corrections for " + std::to_string(scans.scans.size()) +
+                                 " scans");
+  }
+  Progress("report: the scan against the fitted model");
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, WriteFitReport(model, q, T_world_base, scans, corrections, result,
+                              "edgefit fit: " + result["inputs"]["urdf"].get<std::string>(),
+                              options, FLAGS_out));
+  std::printf("report: %s\n", FLAGS_out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command ReportCommand() {
+  return {"report",
+          "the HTML report of a fit from its result.json (the scan against the fitted model, "
+          "every joint's verdict)",
+          "Usage:\n"
+          "  edgefit report --result=result.json --out=report.html\n"
+          "Example:\n"
+          "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
+          "  edgefit report --result=result.json --out=report.html",
+          {"result", "out"},
+          Run};
+}
+
+}  // namespace edgefit::tools
