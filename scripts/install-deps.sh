@@ -10,7 +10,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   liburdfdom-dev liburdfdom-headers-dev libassimp-dev libnanoflann-dev
-  libomp-dev libembree-dev nlohmann-json3-dev libfast-float-dev libtinyxml2-dev
+  libomp-dev libembree-dev nlohmann-json3-dev libfast-float-dev libtinyxml2-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
 )

@@ -239,9 +239,9 @@ int RunFit(const Command& command) {
     for (const StationCorrection& c : fit.stations.stations) corrections.push_back(c.correction);
     const Status status =
         WriteFitReport(model, fit.q, fit.T_world_base, has_roi ? in_roi : scans, corrections,
-                       shown, "edgefit fit: " + FLAGS_urdf, FitReportOptions(), FLAGS_out_report);
+                       shown, "edgefit fit: " + FLAGS_urdf, FitReportOptions(), FLAGS_out_report,
+                       &written);
     if (!status.ok()) return fail(status);
-    written.push_back(FLAGS_out_report);
   }
   if (!FLAGS_out_background.empty()) {
     Progress("background: removing the fitted model's points");

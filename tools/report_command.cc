@@ -129,8 +129,9 @@ int Run(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, WriteFitReport(model, q, T_world_base, scans, corrections, result,
                               "edgefit fit: " + result["inputs"]["urdf"].get<std::string>(),
-                              options, FLAGS_out));
-  std::printf("report: %s\n", FLAGS_out.c_str());
+                              options, FLAGS_out, nullptr));
+  std::printf("report: %s (each station's view: %s, ...)\n", FLAGS_out.c_str(),
+              StationImagePath(FLAGS_out, 0).c_str());
   return 0;
 }
 

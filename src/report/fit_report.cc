@@ -3,16 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base64.h"
 #include "edgefit/core/atomic_file.h"
-#include "edgefit/core/point_kdtree.h"
-#include "edgefit/model/surface_sampler.h"
+#include "model_distance.h"
 #include "report_page.h"
+#include "station_image.h"
 
 namespace edgefit {
 namespace {
@@ -54,6 +57,12 @@ std::string OrbitControlsPath(const FitReportOptions& options) {
 
 }  // namespace
 
+std::string StationImagePath(const std::string& report_path, size_t station) {
+  std::filesystem::path p(report_path);
+  p.replace_filename(p.stem().string() + "_station_" + std::to_string(station + 1) + ".png");
+  return p.string();
+}
+
 bool FitReportOptions::IsValid(std::string* error) const {
   auto fail = [error](const std::string& message) {
     if (error != nullptr) *error = message;
@@ -65,6 +74,7 @@ bool FitReportOptions::IsValid(std::string* error) const {
     return fail("residual_scale must be > 0 and not_modelled >= residual_scale");
   }
   if (!(sample_spacing > 0.0)) return fail("sample_spacing must be > 0");
+  if (max_image_size < 16) return fail("max_image_size must be >= 16");
   return true;
 }
 
@@ -82,7 +92,7 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
                       const Pose& T_world_base, const ScanSet& scans,
                       const std::vector<Pose>& station_corrections, const nlohmann::json& result,
                       const std::string& title, const FitReportOptions& options,
-                      const std::string& path) {
+                      const std::string& path, std::vector<std::string>* written) {
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("report: " + error);
   if (q.size() != model.joints().size()) return Status::Error("report: wrong joint count");
@@ -132,38 +142,38 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
     }
   }
 
-  // Each shown point's distance to the model's surface samples, in 0.1 mm
-  // (capped at 6.5 m).
-  // Each shown point's distance to the model's surface samples, in 0.1 mm
-  // (capped at 6.5 m), and the link of the nearest sample.
-  std::vector<Eigen::Vector3f> samples;
-  std::vector<uint16_t> link_of_sample;
-  {
-    SamplingOptions sampling;
-    sampling.spacing = options.sample_spacing;
-    sampling.seed = options.seed;
-    const std::vector<SurfaceSamples> link_samples = SampleModelSurfaces(model, sampling);
-    for (size_t l = 0; l < link_samples.size(); ++l) {
-      for (const Eigen::Vector3f& p : link_samples[l].points) {
-        samples.push_back((T_world_link[l] * p.cast<double>() - origin).cast<float>());
-        link_of_sample.push_back(static_cast<uint16_t>(l));
-      }
-    }
-  }
-  if (samples.empty()) return Status::Error("report: the model has no surface samples");
-  const PointVectorAdaptor adaptor{&samples};
-  const PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  // Each shown point's distance to the model's surface in 0.1 mm (capped
+  // at 6.5 m), and the link of the nearest surface sample.
+  const ModelDistance model_distance(model, q, T_world_base, options.sample_spacing, options.seed,
+                                     origin);
+  if (model_distance.empty()) return Status::Error("report: the model has no surface samples");
   std::vector<uint16_t> distance(shown.size(), std::numeric_limits<uint16_t>::max());
   std::vector<uint16_t> link(shown.size(), 0);
   const int64_t n = static_cast<int64_t>(shown.size());
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < n; ++i) {
-    uint32_t nearest = 0;
-    float d2 = 0.0f;
-    if (tree.knnSearch(shown[static_cast<size_t>(i)].data(), 1, &nearest, &d2) == 0) continue;
-    distance[static_cast<size_t>(i)] =
-        static_cast<uint16_t>(std::min(65535.0, std::round(std::sqrt(double{d2}) * 1e4)));
-    link[static_cast<size_t>(i)] = link_of_sample[nearest];
+    int nearest_link = -1;
+    const double d = model_distance.Distance(shown[static_cast<size_t>(i)], &nearest_link);
+    if (nearest_link < 0) continue;
+    distance[static_cast<size_t>(i)] = static_cast<uint16_t>(std::min(65535.0, std::round(d * 1e4)));
+    link[static_cast<size_t>(i)] = static_cast<uint16_t>(nearest_link);
+  }
+
+  // What each station saw, coloured the same way: in the page, and as PNG
+  // files beside it.
+  nlohmann::json stations = nlohmann::json::array();
+  std::vector<std::pair<std::string, std::string>> pngs;  // path, bytes
+  for (size_t st = 0; st < scans.scans.size(); ++st) {
+    const RgbImage image = StationImage(scans.scans[st], T_world_scanner[st], model_distance,
+                                        origin, crop, options);
+    if (image.width == 0) continue;
+    std::string png;
+    EDGEFIT_RETURN_IF_ERROR(EncodePng(image, &png));
+    const std::string file = StationImagePath(path, st);
+    stations.push_back({{"station", st + 1},
+                        {"file", std::filesystem::path(file).filename().string()},
+                        {"png", Base64(png.data(), png.size())}});
+    if (options.station_pngs) pngs.emplace_back(file, std::move(png));
   }
   std::vector<float> positions;
   positions.reserve(3 * shown.size());
@@ -187,6 +197,7 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
       {"colours", {{"residual_scale_m", options.residual_scale},
                    {"not_modelled_m", options.not_modelled}}},
       {"scanners", scanners},
+      {"stations", stations},
       {"joint_types", joint_types},
       {"link_names", link_names},
       {"links", LinkMeshes(model, T_world_link, origin)},
@@ -197,7 +208,23 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
         {"positions", Base64(positions)},
         {"distance_0.1mm", Base64(distance)},
         {"link", Base64(link)}}}};
-  return WriteStringAtomically(path, ReportPage(title, three, orbit, data.dump()));
+  std::vector<std::string> done;
+  auto undo = [&done](const Status& status) {
+    for (const std::string& f : done) std::remove(f.c_str());
+    return status;
+  };
+  for (const auto& [file, png] : pngs) {
+    const Status status = WriteStringAtomically(file, png);
+    if (!status.ok()) return undo(status);
+    done.push_back(file);
+  }
+  const Status status = WriteStringAtomically(path, ReportPage(title, three, orbit, data.dump()));
+  if (!status.ok()) return undo(status);
+  if (written != nullptr) {
+    written->insert(written->end(), done.begin(), done.end());
+    written->push_back(path);
+  }
+  return Status::Ok();
 }
 
 }  // namespace edgefit

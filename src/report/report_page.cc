@@ -137,6 +137,18 @@ if (result.base) {
   }
 })();
 
+// What each station saw: its grid around the model, the same colours.
+(function stations() {
+  const box = document.getElementById('stations');
+  for (const s of data.stations) {
+    const fig = el('figure');
+    const img = el('img', {alt: 'station ' + s.station, style: 'max-width: 100%'});
+    img.src = 'data:image/png;base64,' + s.png;
+    fig.append(img, el('figcaption', {}, 'station ' + s.station + ' (' + s.file + ')'));
+    box.append(fig);
+  }
+})();
+
 // Stage timings and options.
 (function timings() {
   const table = document.getElementById('timings');
@@ -241,6 +253,25 @@ function render() {
   renderer.render(scene, camera);
 }
 for (const id of ['show-scan', 'show-model', 'far-only']) document.getElementById(id).addEventListener('change', render);
+// Each station's viewpoint (where the scanner stood, looking at the model),
+// and the overview.
+function lookFrom(position) {
+  camera.position.copy(position);
+  controls.target.copy(centre);
+  controls.update();
+  render();
+}
+(function viewpoints() {
+  const box = document.getElementById('viewpoints');
+  const overview = camera.position.clone();
+  const add = (label, position) => {
+    const b = el('button', {type: 'button'}, label);
+    b.addEventListener('click', () => lookFrom(position));
+    box.append(b, document.createTextNode(' '));
+  };
+  add('overview', overview);
+  data.scanners.forEach((s, k) => add('station ' + (k + 1), new THREE.Vector3(...s)));
+})();
 controls.addEventListener('change', render);
 window.addEventListener('resize', () => {
   camera.aspect = view.clientWidth / view.clientHeight; camera.updateProjectionMatrix();
@@ -285,7 +316,8 @@ std::string ReportPage(const std::string& title, const std::string& three_js,
  <div id="controls">
   <label><input type="checkbox" id="show-model" checked> fitted model</label><br>
   <label><input type="checkbox" id="show-scan" checked> scan</label><br>
-  <label><input type="checkbox" id="far-only"> only points far from the model</label>
+  <label><input type="checkbox" id="far-only"> only points far from the model</label><br>
+  <span id="viewpoints">view from </span>
  </div>
  <div id="legend">distance to the fitted model: 0 <canvas id="colourbar" width="160" height="10"></canvas>
   <span id="scalemax"></span> and more<br><span id="farlabel"></span><br><span id="pointinfo"></span></div>
@@ -294,6 +326,7 @@ std::string ReportPage(const std::string& title, const std::string& three_js,
  <h2>Joints</h2><table id="joints"></table>
  <h2>Links</h2><table id="links"></table>
  <h2>Residuals per link (<span id="histrange"></span>)</h2><div class="histograms" id="histograms"></div>
+ <h2>What each station saw</h2><div id="stations"></div>
  <h2>Stage timings</h2><table id="timings"></table>
  <h2>Options</h2><pre id="options"></pre>
 </div>

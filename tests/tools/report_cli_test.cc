@@ -34,6 +34,11 @@ TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   ASSERT_FALSE(html.empty());
   EXPECT_EQ(html.find("src=\""), std::string::npos) << "the page loads no file";
   EXPECT_EQ(html.find("href=\""), std::string::npos) << "the page links no file";
+  // What each station saw, as PNG files beside the report.
+  for (const char* png : {"report/arm report_station_1.png", "report/arm report_station_2.png"}) {
+    EXPECT_EQ(Slurp(Path(png)).substr(0, 8), "\x89PNG\r\n\x1a\n") << png;
+  }
+  EXPECT_FALSE(fs::exists(Path("report/arm report_station_3.png")));
 
   if (std::system("command -v chromium >/dev/null 2>&1") != 0) {
     GTEST_SKIP() << "chromium is not installed (./scripts/install-deps.sh installs it)";
@@ -52,7 +57,8 @@ TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   ASSERT_TRUE(std::regex_match(status, m, std::regex("ok: ([0-9]+) pixels drawn"))) << status;
   EXPECT_GT(std::stoi(m[1]), 20000) << "the 3D view is nearly blank";
   // The tables the script built from the result.
-  for (const char* text : {"joint_1", "joint_2", "piston_joint", "fit ok", "link_2"}) {
+  for (const char* text : {"joint_1", "joint_2", "piston_joint", "fit ok", "link_2",
+                           "src=\"data:image/png;base64,", "station 2"}) {
     EXPECT_NE(page.find(text), std::string::npos) << text;
   }
 }

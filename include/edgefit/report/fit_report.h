@@ -3,7 +3,8 @@
 // judge it at a glance: the scan around the asset, thinned, each point
 // coloured by its distance to the fitted model (points far from it, such as
 // accessories, jackets and the surroundings, stand out in grey); the fitted
-// meshes, which can be toggled; the verdict, and per joint its value,
+// meshes, which can be toggled, seen from anywhere or from each station;
+// what each station saw as an image (also PNG files); the verdict, and per joint its value,
 // verdict, standard deviation and, with a truth, its error; the stage
 // timings and the options. The 3D view is WebGL through three.js, embedded
 // from Debian's libjs-three (read when the report is written).
@@ -37,6 +38,11 @@ struct FitReportOptions {
   // The model's surface samples the distances are measured to [m].
   double sample_spacing = 0.003;
   uint64_t seed = 1;
+  // What each station saw (its grid around the model, coloured the same
+  // way) at most this many pixels a side; station_pngs: also written as
+  // PNG files beside the report (StationImagePath).
+  int max_image_size = 1600;
+  bool station_pngs = true;
   // Where Debian's libjs-three installs three.min.js and
   // examples/js/controls/OrbitControls.js.
   std::string three_js_dir = "/usr/share/javascript/three";
@@ -48,17 +54,22 @@ struct FitReportOptions {
 // whose report is asked for).
 Status CheckFitReportScripts(const FitReportOptions& options);
 
+// The PNG of station k (0-based) beside the report: R.html -> R_station_<k+1>.png.
+std::string StationImagePath(const std::string& report_path, size_t station);
+
 // Writes the report of `result` (result.json of the fit) for the model at
-// (q, T_world_base) over `scans` to `path`, atomically; each scan placed
-// by its station's correction (station_corrections, scan order, as the fit
-// registered them: T_world_scanner = correction * written; empty: as
-// written). Fails (nothing written) on invalid options, q or corrections of
-// the wrong size, three.js missing, or the file not writable.
+// (q, T_world_base) over `scans` to `path`, and the stations' PNG files,
+// each atomically; each scan placed by its station's correction
+// (station_corrections, scan order, as the fit registered them:
+// T_world_scanner = correction * written; empty: as written). *written
+// (may be null) gets the files written. Fails (nothing written) on invalid
+// options, q or corrections of the wrong size, three.js missing, or a file
+// not writable.
 Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
                       const Pose& T_world_base, const ScanSet& scans,
                       const std::vector<Pose>& station_corrections, const nlohmann::json& result,
                       const std::string& title, const FitReportOptions& options,
-                      const std::string& path);
+                      const std::string& path, std::vector<std::string>* written);
 
 }  // namespace edgefit
 
