@@ -13,6 +13,7 @@
 DEFINE_string(progress, "auto",
               "Progress lines on stderr: auto (when stderr is a terminal), always (logs, batch "
               "jobs), never.");
+DEFINE_bool(quiet, false, "No progress lines on stderr (the same as --progress=never).");
 
 namespace edgefit::tools {
 namespace {
@@ -22,7 +23,7 @@ bool IsGlobalFlag(const std::string& name) {
   static const char* kGlobal[] = {
       "help",        "helpfull",        "helpshort",   "version",         "v",
       "logtostderr", "alsologtostderr", "minloglevel", "stderrthreshold", "vmodule",
-      "flagfile",    "fromenv",         "progress"};
+      "flagfile",    "fromenv",         "progress",    "quiet"};
   for (const char* g : kGlobal) {
     if (name == g) return true;
   }
@@ -109,14 +110,16 @@ void PrintOverview() {
   }
   std::cout << "  help     this overview\n\n"
                "`edgefit <command> --help` lists a command's flags; every command takes\n"
-               "--progress=auto|always|never (progress lines on stderr; auto: on a terminal).\n"
+               "--progress=auto|always|never (progress lines on stderr; auto: on a terminal)\n"
+               "and --quiet (--progress=never).\n"
                "Exit codes: 0 success, 2 bad input (one line on stderr says what and where),\n"
                "1 internal failure.\n";
 }
 
 void Progress(const std::string& message) {
   static const bool enabled =
-      FLAGS_progress == "always" || (FLAGS_progress == "auto" && ::isatty(STDERR_FILENO) != 0);
+      !FLAGS_quiet && (FLAGS_progress == "always" ||
+                       (FLAGS_progress == "auto" && ::isatty(STDERR_FILENO) != 0));
   if (enabled) std::cerr << message << std::endl;
 }
 

@@ -33,6 +33,10 @@ TEST_F(CliTest, EdgesWritesWeightsJsonAndPly) {
   ASSERT_EQ(logged.exit_code, 0) << logged.err;
   EXPECT_NE(logged.err.find("edges: "), std::string::npos) << logged.err;
   ExpectBadInput("edges --progress=sometimes --scan=" + scan, "--progress");
+  const RunResult quiet = Run("edges --progress=always --quiet --scan=" + scan +
+                              " --out_weights=" + Path("w3.bin") + " --out_json=" + Path("e3.json"));
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err.find("edges: "), std::string::npos) << quiet.err;
   const nlohmann::json e = nlohmann::json::parse(Slurp(Path("e.json")));
   const nlohmann::json info = nlohmann::json::parse(Run("info --json --scan=" + scan).out);
   // One float32 per grid cell, scans in file order.
