@@ -55,6 +55,94 @@ std::string OrbitControlsPath(const FitReportOptions& options) {
   return options.three_js_dir + "/examples/js/controls/OrbitControls.js";
 }
 
+// The scan near the model (in `crop`, world), every stride-th valid point in
+// cell order, with its distance to the model in 0.1 mm (capped at 6.5 m)
+// and the link of the nearest surface sample.
+nlohmann::json ShownPoints(const ScanSet& scans, const std::vector<Pose>& T_world_scanner,
+                           const Eigen::AlignedBox3d& crop, const Eigen::Vector3d& origin,
+                           const ModelDistance& model_distance, const FitReportOptions& options) {
+  auto world = [&](size_t s, size_t i) {
+    return T_world_scanner[s] * scans.scans[s].point_scanner(i).cast<double>();
+  };
+  size_t near = 0;
+  for (size_t s = 0; s < scans.scans.size(); ++s) {
+    const OrganizedScan& scan = scans.scans[s];
+    for (size_t i = 0; i < scan.size(); ++i) near += scan.IsValid(i) && crop.contains(world(s, i));
+  }
+  const size_t stride = std::max<size_t>(1, (near + options.max_points - 1) / options.max_points);
+  std::vector<Eigen::Vector3f> shown;
+  shown.reserve(near / stride + 1);
+  size_t k = 0;
+  for (size_t s = 0; s < scans.scans.size(); ++s) {
+    const OrganizedScan& scan = scans.scans[s];
+    for (size_t i = 0; i < scan.size(); ++i) {
+      if (!scan.IsValid(i)) continue;
+      const Eigen::Vector3d p = world(s, i);
+      if (crop.contains(p) && k++ % stride == 0) shown.push_back((p - origin).cast<float>());
+    }
+  }
+  std::vector<uint16_t> distance(shown.size(), std::numeric_limits<uint16_t>::max());
+  std::vector<uint16_t> link(shown.size(), 0);
+  const int64_t n = static_cast<int64_t>(shown.size());
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < n; ++i) {
+    int nearest_link = -1;
+    const double d = model_distance.Distance(shown[static_cast<size_t>(i)], &nearest_link);
+    if (nearest_link < 0) continue;
+    distance[static_cast<size_t>(i)] = static_cast<uint16_t>(std::min(65535.0, std::round(d * 1e4)));
+    link[static_cast<size_t>(i)] = static_cast<uint16_t>(nearest_link);
+  }
+  std::vector<float> positions;
+  positions.reserve(3 * shown.size());
+  for (const Eigen::Vector3f& p : shown) positions.insert(positions.end(), {p.x(), p.y(), p.z()});
+  return {{"count", shown.size()},
+          {"near", near},
+          {"stride", stride},
+          {"positions", Base64(positions)},
+          {"distance_0.1mm", Base64(distance)},
+          {"link", Base64(link)}};
+}
+
+// What each station saw (StationImage), for the page; *pngs gets each PNG
+// file's path and bytes when options.station_pngs.
+Status StationViews(const ScanSet& scans, const std::vector<Pose>& T_world_scanner,
+                    const Eigen::AlignedBox3d& crop, const Eigen::Vector3d& origin,
+                    const ModelDistance& model_distance, const FitReportOptions& options,
+                    const std::string& report_path, nlohmann::json* stations,
+                    std::vector<std::pair<std::string, std::string>>* pngs) {
+  *stations = nlohmann::json::array();
+  for (size_t st = 0; st < scans.scans.size(); ++st) {
+    const RgbImage image = StationImage(scans.scans[st], T_world_scanner[st], model_distance,
+                                        origin, crop, options);
+    if (image.width == 0) continue;
+    std::string png;
+    EDGEFIT_RETURN_IF_ERROR(EncodePng(image, &png));
+    const std::string file = StationImagePath(report_path, st);
+    stations->push_back({{"station", st + 1},
+                         {"file", std::filesystem::path(file).filename().string()},
+                         {"png", Base64(png.data(), png.size())}});
+    if (options.station_pngs) pngs->emplace_back(file, std::move(png));
+  }
+  return Status::Ok();
+}
+
+// Writes each (path, bytes) and then the page, atomically; on a failure
+// removes what it wrote. *written (may be null) gets the paths.
+Status WriteAll(const std::vector<std::pair<std::string, std::string>>& files,
+                std::vector<std::string>* written) {
+  std::vector<std::string> done;
+  for (const auto& [path, bytes] : files) {
+    const Status status = WriteStringAtomically(path, bytes);
+    if (!status.ok()) {
+      for (const std::string& f : done) std::remove(f.c_str());
+      return status;
+    }
+    done.push_back(path);
+  }
+  if (written != nullptr) written->insert(written->end(), done.begin(), done.end());
+  return Status::Ok();
+}
+
 }  // namespace
 
 std::string StationImagePath(const std::string& report_path, size_t station) {
@@ -99,17 +187,19 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
   if (!station_corrections.empty() && station_corrections.size() != scans.scans.size()) {
     return Status::Error("report: one station correction per scan expected");
   }
-  std::vector<Pose> T_world_scanner;  // as the fit registered them
-  for (size_t s = 0; s < scans.scans.size(); ++s) {
-    const Pose& written = scans.scans[s].T_world_scanner();
-    T_world_scanner.push_back(station_corrections.empty() ? written
-                                                          : station_corrections[s] * written);
-  }
   EDGEFIT_RETURN_IF_ERROR(CheckFitReportScripts(options));
   std::string three, orbit;
   EDGEFIT_RETURN_IF_ERROR(ReadFileToString(ThreePath(options), &three));
   EDGEFIT_RETURN_IF_ERROR(ReadFileToString(OrbitControlsPath(options), &orbit));
+  std::vector<Pose> T_world_scanner;  // as the fit registered them
+  for (size_t s = 0; s < scans.scans.size(); ++s) {
+    const Pose& as_written = scans.scans[s].T_world_scanner();
+    T_world_scanner.push_back(station_corrections.empty() ? as_written
+                                                          : station_corrections[s] * as_written);
+  }
 
+  // The model's box, its centre the page's origin (float precision for
+  // survey coordinates far from zero), and the scan shown around it.
   const std::vector<Pose> T_world_link = model.ForwardKinematics(q, T_world_base);
   Eigen::AlignedBox3d box;
   for (size_t l = 0; l < model.links().size(); ++l) {
@@ -119,66 +209,14 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
   const Eigen::Vector3d origin = box.center();
   const Eigen::AlignedBox3d crop(box.min() - Eigen::Vector3d::Constant(options.margin),
                                  box.max() + Eigen::Vector3d::Constant(options.margin));
-
-  // The scan near the model, every stride-th valid point in cell order.
-  auto world = [&](size_t s, size_t i) {
-    return T_world_scanner[s] * scans.scans[s].point_scanner(i).cast<double>();
-  };
-  size_t near = 0;
-  for (size_t s = 0; s < scans.scans.size(); ++s) {
-    const OrganizedScan& scan = scans.scans[s];
-    for (size_t i = 0; i < scan.size(); ++i) near += scan.IsValid(i) && crop.contains(world(s, i));
-  }
-  const size_t stride = std::max<size_t>(1, (near + options.max_points - 1) / options.max_points);
-  std::vector<Eigen::Vector3f> shown;
-  shown.reserve(near / stride + 1);
-  size_t k = 0;
-  for (size_t s = 0; s < scans.scans.size(); ++s) {
-    const OrganizedScan& scan = scans.scans[s];
-    for (size_t i = 0; i < scan.size(); ++i) {
-      if (!scan.IsValid(i)) continue;
-      const Eigen::Vector3d p = world(s, i);
-      if (crop.contains(p) && k++ % stride == 0) shown.push_back((p - origin).cast<float>());
-    }
-  }
-
-  // Each shown point's distance to the model's surface in 0.1 mm (capped
-  // at 6.5 m), and the link of the nearest surface sample.
   const ModelDistance model_distance(model, q, T_world_base, options.sample_spacing, options.seed,
                                      origin);
   if (model_distance.empty()) return Status::Error("report: the model has no surface samples");
-  std::vector<uint16_t> distance(shown.size(), std::numeric_limits<uint16_t>::max());
-  std::vector<uint16_t> link(shown.size(), 0);
-  const int64_t n = static_cast<int64_t>(shown.size());
-#pragma omp parallel for schedule(static)
-  for (int64_t i = 0; i < n; ++i) {
-    int nearest_link = -1;
-    const double d = model_distance.Distance(shown[static_cast<size_t>(i)], &nearest_link);
-    if (nearest_link < 0) continue;
-    distance[static_cast<size_t>(i)] = static_cast<uint16_t>(std::min(65535.0, std::round(d * 1e4)));
-    link[static_cast<size_t>(i)] = static_cast<uint16_t>(nearest_link);
-  }
 
-  // What each station saw, coloured the same way: in the page, and as PNG
-  // files beside it.
-  nlohmann::json stations = nlohmann::json::array();
-  std::vector<std::pair<std::string, std::string>> pngs;  // path, bytes
-  for (size_t st = 0; st < scans.scans.size(); ++st) {
-    const RgbImage image = StationImage(scans.scans[st], T_world_scanner[st], model_distance,
-                                        origin, crop, options);
-    if (image.width == 0) continue;
-    std::string png;
-    EDGEFIT_RETURN_IF_ERROR(EncodePng(image, &png));
-    const std::string file = StationImagePath(path, st);
-    stations.push_back({{"station", st + 1},
-                        {"file", std::filesystem::path(file).filename().string()},
-                        {"png", Base64(png.data(), png.size())}});
-    if (options.station_pngs) pngs.emplace_back(file, std::move(png));
-  }
-  std::vector<float> positions;
-  positions.reserve(3 * shown.size());
-  for (const Eigen::Vector3f& p : shown) positions.insert(positions.end(), {p.x(), p.y(), p.z()});
-
+  nlohmann::json stations;
+  std::vector<std::pair<std::string, std::string>> files;  // the PNGs, then the page
+  EDGEFIT_RETURN_IF_ERROR(StationViews(scans, T_world_scanner, crop, origin, model_distance,
+                                       options, path, &stations, &files));
   nlohmann::json joint_types = nlohmann::json::object();
   for (const Joint& j : model.joints()) {
     if (j.IsMoving()) joint_types[j.name] = j.type == JointType::kPrismatic ? "prismatic" : "revolute";
@@ -201,30 +239,9 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
       {"joint_types", joint_types},
       {"link_names", link_names},
       {"links", LinkMeshes(model, T_world_link, origin)},
-      {"points",
-       {{"count", shown.size()},
-        {"near", near},
-        {"stride", stride},
-        {"positions", Base64(positions)},
-        {"distance_0.1mm", Base64(distance)},
-        {"link", Base64(link)}}}};
-  std::vector<std::string> done;
-  auto undo = [&done](const Status& status) {
-    for (const std::string& f : done) std::remove(f.c_str());
-    return status;
-  };
-  for (const auto& [file, png] : pngs) {
-    const Status status = WriteStringAtomically(file, png);
-    if (!status.ok()) return undo(status);
-    done.push_back(file);
-  }
-  const Status status = WriteStringAtomically(path, ReportPage(title, three, orbit, data.dump()));
-  if (!status.ok()) return undo(status);
-  if (written != nullptr) {
-    written->insert(written->end(), done.begin(), done.end());
-    written->push_back(path);
-  }
-  return Status::Ok();
+      {"points", ShownPoints(scans, T_world_scanner, crop, origin, model_distance, options)}};
+  files.emplace_back(path, ReportPage(title, three, orbit, data.dump()));
+  return WriteAll(files, written);
 }
 
 }  // namespace edgefit

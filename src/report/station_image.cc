@@ -21,6 +21,7 @@ RgbImage StationImage(const OrganizedScan& scan, const Pose& T_world_scanner,
                       const ModelDistance& distance, const Eigen::Vector3d& origin,
                       const Eigen::AlignedBox3d& crop, const FitReportOptions& options) {
   RgbImage image;
+  if (!scan.organized()) return image;  // a cloud without a grid: nothing the scanner "saw"
   int row0 = scan.rows(), row1 = -1, col0 = scan.cols(), col1 = -1;
   for (size_t i = 0; i < scan.size(); ++i) {
     if (!scan.IsValid(i) || !crop.contains(T_world_scanner * scan.point_scanner(i).cast<double>())) {

@@ -33,7 +33,7 @@ std::array<uint8_t, 3> ResidualColour(double distance, const FitReportOptions& o
 // The image of `scan` placed at T_world_scanner: the grid's cells whose
 // points lie in `crop` (world), with a margin of 5 % (at most
 // options.max_image_size pixels a side, every k-th cell). Empty when no
-// point of the scan lies in the crop.
+// point of the scan lies in the crop, or the scan has no grid (a PLY cloud).
 RgbImage StationImage(const OrganizedScan& scan, const Pose& T_world_scanner,
                       const ModelDistance& distance, const Eigen::Vector3d& origin,
                       const Eigen::AlignedBox3d& crop, const FitReportOptions& options);
