@@ -115,11 +115,6 @@ int Run(const Command& command) {
   for (const std::string& path : scan_paths) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
   }
-  if (result["inputs"].contains("roi")) {
-    // The fit saw the box only, and registered its stations on that crop:
-    // the corrections still hold per scan.
-    Progress("report: the fit's --roi is not applied; the report shows the scans near the model");
-  }
   if (!corrections.empty() && corrections.size() != scans.scans.size()) {
     return BadInput(command, FLAGS_result + ": " + std::to_string(corrections.size()) +
                                  " station corrections for " + std::to_string(scans.scans.size()) +
