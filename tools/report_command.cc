@@ -1,7 +1,6 @@
 // edgefit report: the HTML report of a fit from its result.json, whose
 // "inputs" (written by edgefit fit) name the model and the scans it read.
 //   edgefit report --result=result.json --out=report.html
-#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -10,6 +9,7 @@
 #include "commands.h"
 #include "common_flags.h"
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/core/pose_json.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/urdf_loader.h"
@@ -22,23 +22,10 @@ namespace {
 
 using nlohmann::json;
 
-// A 4 x 4 rigid transform from its rows (PoseRows).
+// PoseFromJson with an error naming where.
 Status PoseFromRows(const json& rows, const std::string& what, Pose* T) {
-  bool ok = rows.is_array() && rows.size() == 4;
-  Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
-  for (int r = 0; ok && r < 4; ++r) {
-    ok = rows[r].is_array() && rows[r].size() == 4;
-    for (int c = 0; ok && c < 4; ++c) {
-      ok = rows[r][c].is_number() && std::isfinite(rows[r][c].get<double>());
-      if (ok) m(r, c) = rows[r][c].get<double>();
-    }
-  }
-  const Eigen::Matrix3d R = m.topLeftCorner<3, 3>();
-  if (!ok || !(R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-6)) {
-    return Status::Error(what + ": not a 4 x 4 rigid transform");
-  }
-  T->matrix() = m;
-  return Status::Ok();
+  return PoseFromJson(rows, T) ? Status::Ok()
+                               : Status::Error(what + ": not a 4 x 4 rigid transform");
 }
 
 // The fit's model, joint values, base and station corrections from result.json.

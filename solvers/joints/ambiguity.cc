@@ -112,13 +112,18 @@ ChainFitter::ViewComparison ChainFitter::CompareViews(const Pose& T_world_base,
   std::vector<Eigen::Vector3d> matched[2], shown[2];
   std::vector<double> saved[2];
   size_t samples = 0;
-  double common = 0.0;
+  double evidence = 0.0;  // the samples seen at both, then those shown at one only
   std::vector<float> loss[2];
   for (size_t l = 0; l < T[0].size(); ++l) {
     const SurfaceSamples& body = sweep_samples_[l];
     if (below[l]) samples += body.size();
     if (body.points.empty()) continue;
-    for (int v = 0; v < 2; ++v) sweep_->LossAt(body, T[v][l], options_.sweep, &loss[v]);
+    sweep_->LossAt(body, T[0][l], options_.sweep, &loss[0]);
+    if (below[l]) {
+      sweep_->LossAt(body, T[1][l], options_.sweep, &loss[1]);
+    } else {
+      loss[1] = loss[0];  // placed alike by both values
+    }
     for (size_t i = 0; i < body.points.size(); ++i) {
       const bool seen[2] = {loss[0][i] >= 0.0f, loss[1][i] >= 0.0f};
       for (int v = 0; v < 2; ++v) {
@@ -130,14 +135,13 @@ ChainFitter::ViewComparison ChainFitter::CompareViews(const Pose& T_world_base,
           saved[v].push_back(hidden_loss - loss[v][i]);
         }
       }
-      if (below[l] && apart[l] && seen[0] && seen[1]) common += loss[0][i] - loss[1][i];
+      if (below[l] && apart[l] && seen[0] && seen[1]) evidence += loss[0][i] - loss[1][i];
     }
   }
   // A sample shown at one value only is evidence for it when no matched
   // sample of the model at the other value lies near it (1.5 sweep
   // spacings: the samples' gaps): surface the other leaves unmatched.
   const double reach = 1.5 * samples_.sweep_spacing;
-  double evidence = common;
   ViewComparison out;
   out.shown = shown[1].size();
   for (int v = 0; v < 2; ++v) {
@@ -148,7 +152,6 @@ ChainFitter::ViewComparison ChainFitter::CompareViews(const Pose& T_world_base,
     }
   }
   const double per_sample = 1.0 / static_cast<double>(std::max<size_t>(samples, 1));
-  out.common_gain = common * per_sample;
   out.evidence_gain = evidence * per_sample;
   return out;
 }

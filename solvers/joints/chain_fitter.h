@@ -242,17 +242,15 @@ class ChainFitter {
                     const std::vector<double>& q_other, int link,
                     const JointSweep* sweep = nullptr) const;
   // What the bodies below `link` that q and q_other place apart show at
-  // each, per sample of the whole subtree (BranchGain's scale) [m]:
-  // common_gain is BranchGain on their samples a scanner sees at both
-  // values only; evidence_gain adds each sample matched within
-  // ChainOptions::explained_distance at one value and hidden at the other
-  // when no matched sample of the model at the other lies near it (surface
-  // only that value explains; for q_other, against q), and leaves out those
-  // that only show more of surface both explain. shown counts the samples
-  // matched at q_other and hidden at q, new_surface those of them on
-  // surface q leaves unmatched.
+  // each. evidence_gain, per sample of the whole subtree (BranchGain's
+  // scale) [m]: BranchGain on their samples a scanner sees at both values,
+  // plus each sample matched within ChainOptions::explained_distance at one
+  // value and hidden at the other when no matched sample of the model at
+  // the other lies near it (surface only that value explains; for q_other,
+  // against q); samples that only show more of surface both explain are
+  // left out. shown counts the samples matched at q_other and hidden at q,
+  // new_surface those of them on surface q leaves unmatched.
   struct ViewComparison {
-    double common_gain = 0.0;
     double evidence_gain = 0.0;
     size_t shown = 0;
     size_t new_surface = 0;

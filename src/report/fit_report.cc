@@ -1,6 +1,7 @@
 #include "edgefit/report/fit_report.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -46,6 +47,19 @@ nlohmann::json LinkMeshes(const KinematicModel& model, const std::vector<Pose>& 
                      {"indices", Base64(indices)}});
   }
   return links;
+}
+
+// ResidualColour every 0.1 mm from 0 to not_modelled, then the colour of a
+// point farther away: RGB bytes, base64 (the page colours by it).
+std::string Palette(const FitReportOptions& options) {
+  std::vector<uint8_t> rgb;
+  const int steps = static_cast<int>(std::lround(options.not_modelled * 1e4));
+  for (int k = 0; k <= steps + 1; ++k) {
+    const double d = k <= steps ? 1e-4 * k : std::numeric_limits<double>::infinity();
+    const std::array<uint8_t, 3> c = ResidualColour(d, options);
+    rgb.insert(rgb.end(), c.begin(), c.end());
+  }
+  return Base64(rgb);
 }
 
 std::string ThreePath(const FitReportOptions& options) {
@@ -233,7 +247,8 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
       {"origin", {origin.x(), origin.y(), origin.z()}},
       {"result", result},
       {"colours", {{"residual_scale_m", options.residual_scale},
-                   {"not_modelled_m", options.not_modelled}}},
+                   {"not_modelled_m", options.not_modelled},
+                   {"palette", Palette(options)}}},
       {"scanners", scanners},
       {"stations", stations},
       {"joint_types", joint_types},

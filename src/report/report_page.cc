@@ -74,13 +74,13 @@ function el(tag, attrs, text) {
 }
 function fmt(x, digits) { return (x === null || x === undefined || !isFinite(x)) ? '–' : x.toFixed(digits); }
 
-// Distance colour: green at 0, yellow at half the scale, red at the scale;
-// grey beyond not_modelled (the scan there is not the model).
+// Distance colour (the report's ResidualColour, one entry per 0.1 mm up to
+// not_modelled, then the grey of points farther away).
 const scale = data.colours.residual_scale_m, farAway = data.colours.not_modelled_m;
+const palette = decode(data.colours.palette, Uint8Array), last = palette.length / 3 - 1;
 function colour(d, out, i) {
-  if (d > farAway) { out[i] = out[i + 1] = out[i + 2] = 0.62; return; }
-  const t = Math.min(d / scale, 1);
-  out[i] = t < 0.5 ? 2 * t : 1; out[i + 1] = t < 0.5 ? 0.75 + 0.25 * 2 * t : 2 * (1 - t); out[i + 2] = 0.1;
+  const k = 3 * (d > farAway ? last : Math.min(Math.round(d * 1e4), last - 1));
+  out[i] = palette[k] / 255; out[i + 1] = palette[k + 1] / 255; out[i + 2] = palette[k + 2] / 255;
 }
 
 // Header: verdict and base.

@@ -27,7 +27,7 @@ struct RgbImage {
 };
 
 // The report's colour of a point at `distance` [m] from the model (the
-// page's script colours its points the same way).
+// page colours by a table of it).
 std::array<uint8_t, 3> ResidualColour(double distance, const FitReportOptions& options);
 
 // The image of `scan` placed at T_world_scanner: the grid's cells whose

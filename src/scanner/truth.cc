@@ -4,27 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/core/pose_json.h"
 #include "edgefit/scanner/label_file.h"
 
 namespace edgefit {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// A 4x4 rigid transform from nested arrays; false on a wrong shape.
-bool PoseFromJson(const Json& j, Pose* T) {
-  if (!j.is_array() || j.size() != 4) return false;
-  Eigen::Matrix4d m;
-  for (int r = 0; r < 4; ++r) {
-    if (!j[r].is_array() || j[r].size() != 4) return false;
-    for (int c = 0; c < 4; ++c) {
-      if (!j[r][c].is_number()) return false;
-      m(r, c) = j[r][c].get<double>();
-    }
-  }
-  T->matrix() = m;
-  return true;
-}
 
 Json PoseList(const std::vector<Pose>& poses) {
   Json list = Json::array();
