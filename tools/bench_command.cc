@@ -3,11 +3,12 @@
 // its named postures, scanned without and with accessories and fitted with
 // uniform and edge weights: Table 1 (rotation error per joint, degrees) and
 // Table 2 (translation error per joint, mm), then base and tool-tip errors
-// and the time per stage, as Markdown on stdout; optionally one CSV line per
-// joint and a JSON file of every run.
+// and the time per stage, as Markdown on stdout (bench_tables.h); optionally
+// one CSV line per joint, a JSON file of every run and an HTML report of the
+// tables and the ablation plots.
 //
 // Ablations: every list flag below is an axis; the bench runs their product.
-// Scan axes (a new virtual scan each): --noises_mm, --scanner_counts,
+// Scan axes (a new virtual scan each): --noises_mm, --spacings_mm, --scanner_counts,
 // --repeats (seeds seed, seed+1, ...: other base poses, scenes and fit
 // seeds). Fit axes (the same scan, fitted again): --weightings, --w_highs,
 // --lambdas, --losses, --sweep_steps_deg, --searches, --refine_chains.
@@ -26,12 +27,13 @@
 #include <string>
 #include <vector>
 
-#include "bench_report.h"
+#include "bench_runs.h"
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
 #include "costs/robust_loss.h"
 #include "edgefit/bench/bench_case.h"
+#include "edgefit/bench/bench_tables.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/pipeline/asset_kind.h"
@@ -69,6 +71,8 @@ DEFINE_string(refine_chains, "",
               "Bench ablation: off and/or on: the whole-chain refinement (default: "
               "--refine_chain).");
 DEFINE_string(noises_mm, "", "Bench ablation: range noise sigmas [mm] (default: --noise_mm).");
+DEFINE_string(spacings_mm, "",
+              "Bench ablation: scan spacings at 10 m [mm] (default: --spacing_mm).");
 DEFINE_string(sensors, "ideal",
               "Bench axis: sensors (as edgefit scan --sensor): ideal, realistic, or effects "
               "joined by '+' (mixed_pixels, incidence, stations, as_built, jackets).");
@@ -132,7 +136,7 @@ int RunBench(const Command& command) {
   for (const std::string& w : weightings) {
     if (w != "uniform" && w != "edge") return BadInput(command, "--weightings: uniform, edge");
   }
-  std::vector<double> w_highs, lambdas, sweep_steps, noises, scanner_counts;
+  std::vector<double> w_highs, lambdas, sweep_steps, noises, spacings, scanner_counts;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command,
                                ParseNumbers("w_highs", FLAGS_w_highs, FLAGS_w_high, &w_highs));
   EDGEFIT_RETURN_IF_ERROR_EXIT(command,
@@ -141,6 +145,8 @@ int RunBench(const Command& command) {
       command, ParseNumbers("sweep_steps_deg", FLAGS_sweep_steps_deg, 1.0, &sweep_steps));
   EDGEFIT_RETURN_IF_ERROR_EXIT(command,
                                ParseNumbers("noises_mm", FLAGS_noises_mm, FLAGS_noise_mm, &noises));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, ParseNumbers("spacings_mm", FLAGS_spacings_mm, FLAGS_spacing_mm, &spacings));
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseNumbers("scanner_counts", FLAGS_scanner_counts,
                                                      FLAGS_scanners, &scanner_counts));
   std::vector<std::string> losses = SplitList(FLAGS_losses);
@@ -160,6 +166,8 @@ int RunBench(const Command& command) {
     if (r != "on" && r != "off") return BadInput(command, "--refine_chains: off, on");
   }
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                               CheckOutputPaths({FLAGS_out_csv, FLAGS_out_json, FLAGS_out_report}));
   JointParameterization parameterization = JointParameterization::kJointSpace;
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, ParseJointParameterization(FLAGS_parameterization, &parameterization));
@@ -180,9 +188,10 @@ int RunBench(const Command& command) {
       return BadInput(command, "--scanner_counts must be whole numbers >= 1");
     }
   }
-  if (!(FLAGS_spacing_mm > 0.0) || FLAGS_repeats < 1) {
-    return BadInput(command, "--spacing_mm must be > 0 and --repeats >= 1");
+  for (const double s : spacings) {
+    if (!(s > 0.0)) return BadInput(command, "--spacing_mm and --spacings_mm must be > 0");
   }
+  if (FLAGS_repeats < 1) return BadInput(command, "--repeats must be >= 1");
   const std::vector<std::string> sensors = SplitList(FLAGS_sensors);
   for (const std::string& sensor : sensors) {
     AssetScanOptions probe;
@@ -194,6 +203,7 @@ int RunBench(const Command& command) {
   Axes axes;
   axes.sensor = sensors.size() > 1;
   axes.noise = noises.size() > 1;
+  axes.spacing = spacings.size() > 1;
   axes.scanners = scanner_counts.size() > 1;
   axes.repeat = FLAGS_repeats > 1;
   axes.w_high = w_highs.size() > 1;
@@ -242,15 +252,16 @@ int RunBench(const Command& command) {
         for (const std::string& scenery : sceneries)
           for (const std::string& sensor : sensors)
             for (const double noise : noises)
+              for (const double spacing : spacings)
               for (const double scanners : scanner_counts) {
-                const ScanSetting scan_setting{scenery, noise, static_cast<int>(scanners), repeat,
-                                               sensor};
+                const ScanSetting scan_setting{scenery, noise, spacing,
+                                               static_cast<int>(scanners), repeat, sensor};
                 AssetScanOptions scan_options;
                 EDGEFIT_RETURN_IF_ERROR_EXIT(command,
                                              SensorOptionsFromFlags(sensor, &scan_options));
                 scan_options.accessories = scenery == "with";
                 scan_options.scanners = scan_setting.scanners;
-                scan_options.scan.spacing = 1e-3 * FLAGS_spacing_mm;
+                scan_options.scan.spacing = 1e-3 * spacing;
                 scan_options.scan.noise_sigma = 1e-3 * noise;
                 const std::string scene = asset + " " + c.name + ", " + scenery + " accessories, " +
                                           sensor + " sensor" +
@@ -258,8 +269,8 @@ int RunBench(const Command& command) {
                 Progress("bench: scanning " + scene + " (edgefit scan " + ScanFlagsFor(model, c) +
                          (scan_options.accessories ? " --accessories" : "") +
                          " --sensor=" + sensor + (FLAGS_jackets ? " --jackets" : "") +
-                         " --spacing_mm=" + std::to_string(FLAGS_spacing_mm) +
-                         " --noise_mm=" + std::to_string(noise) +
+                         " --spacing_mm=" + Number(spacing) +
+                         " --noise_mm=" + Number(noise) +
                          " --scanners=" + std::to_string(scan_setting.scanners) + ")");
                 VirtualScan scan;
                 Pose T_survey_world;
@@ -281,18 +292,13 @@ int RunBench(const Command& command) {
     }
   }
 
-  const bool labelled = fits.size() > weightings.size() || axes.noise || axes.scanners;
-  std::printf("## Table 1: rotation error per joint [deg]\n");
-  for (const std::string& asset : assets) PrintJointTable(runs, asset, false, labelled);
-  std::printf("\n## Table 2: translation error per joint [mm]\n");
-  for (const std::string& asset : assets) PrintJointTable(runs, asset, true, labelled);
-  PrintRunTable(runs);
-  if (labelled || axes.repeat) PrintSummary(runs);
-
+  nlohmann::json runs_json = nlohmann::json::array();
+  for (const Run& run : runs) runs_json.push_back(RunJson(run));
+  for (const Table& table : BenchTables(runs_json)) std::printf("%s", MarkdownTable(table).c_str());
   if (!FLAGS_out_csv.empty()) {
     std::ostringstream csv;
     csv << "asset,posture,accessories,weighting,noise_mm,scanners,repeat,w_high,lambda,loss,"
-           "sweep_step_deg,search,refine_chain,joint,prismatic,truth,fit,error,ok,failed\n";
+           "sweep_step_deg,search,refine_chain,joint,prismatic,truth,fit,error,ok,failed,spacing_mm\n";
     for (const Run& run : runs) {
       for (const JointError& e : run.result.errors.joints) {
         csv << run.asset << ',' << run.posture << ',' << run.scan.accessories << ','
@@ -300,16 +306,18 @@ int RunBench(const Command& command) {
             << run.scan.repeat << ',' << run.fit.w_high << ',' << run.fit.lambda << ','
             << run.fit.loss << ',' << run.fit.sweep_step_deg << ',' << run.fit.search << ','
             << run.fit.refine_chain << ',' << e.name << ',' << e.prismatic << ',' << e.truth << ','
-            << e.fit << ',' << e.error << ',' << run.result.ok << ',' << run.result.failed << '\n';
+            << e.fit << ',' << e.error << ',' << run.result.ok << ',' << run.result.failed << ',' << run.scan.spacing_mm << '\n';
       }
     }
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, WriteStringAtomically(FLAGS_out_csv, csv.str()));
   }
   if (!FLAGS_out_json.empty()) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const Run& run : runs) out.push_back(RunJson(run));
     EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                                 WriteStringAtomically(FLAGS_out_json, out.dump(2) + "\n"));
+                                 WriteStringAtomically(FLAGS_out_json, runs_json.dump(2) + "\n"));
+  }
+  if (!FLAGS_out_report.empty()) {
+    EDGEFIT_RETURN_IF_ERROR_EXIT(
+        command, WriteTablesReport(BenchReport(runs_json, CommandText(command)), FLAGS_out_report));
   }
   return kExitOk;
 }
@@ -325,17 +333,19 @@ Command BenchCommand() {
       "  edgefit bench [--assets=robot,conveyor] [--scenes=without,with]\n"
       "                [--weightings=uniform,edge] [--spacing_mm=1.7] [--noise_mm=1]\n"
       "                [--scanners=3] [--seed=1] [--w_high=10] [--only=POSTURE,...]\n"
-      "                [--out_csv=F.csv] [--out_json=F.json] [--threads=N]\n"
+      "                [--out_csv=F.csv] [--out_json=F.json] [--out_report=B.html] [--threads=N]\n"
       "Ablations (comma lists; the bench runs their product, then a summary per "
       "setting):\n"
       "                [--w_highs=1,2,5,10,20,50,100] [--lambdas=0.1,1,10 "
       "--parameterization=pose_penalty]\n"
       "                [--losses=trivial,huber,cauchy,soft_l1,tukey] [--sweep_steps_deg=0.5,1,2]\n"
       "                [--searches=lattice,kdtree] [--refine_chains=off,on]\n"
-      "                [--noises_mm=0,1,2,3] [--scanner_counts=1,2,3,4] [--repeats=N]\n"
+      "                [--noises_mm=0,1,2,3] [--spacings_mm=1,1.7,3] [--scanner_counts=1,2,3,4]\n"
+      "                [--repeats=N]\n"
       "                [--sensors=ideal,realistic,stations+as_built] [--jackets]\n"
       "Run from the source folder (the defaults name assets/...). "
-      "benchmarks/plot_ablation.py draws error against w_high or lambda from --out_json.",
+      "--out_report writes the tables and the ablation plots (error against each axis) as one "
+      "HTML page; edgefit report --bench=F.json makes it again from --out_json.",
       {"assets",
        "robot_urdf",
        "robot_attach",
@@ -356,6 +366,8 @@ Command BenchCommand() {
        "searches",
        "refine_chains",
        "noises_mm",
+       "spacings_mm",
+       "out_report",
        "scanner_counts",
        "repeats",
        "parameterization",

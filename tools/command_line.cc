@@ -144,6 +144,17 @@ Status CheckOutputPaths(const std::vector<std::string>& paths) {
   return Status::Ok();
 }
 
+std::string CommandText(const Command& command) {
+  std::string text = std::string("edgefit ") + command.name;
+  for (const std::string& flag : command.flags) {
+    gflags::CommandLineFlagInfo info;
+    if (gflags::GetCommandLineFlagInfo(flag.c_str(), &info) && !info.is_default) {
+      text += " --" + flag + "=" + info.current_value;
+    }
+  }
+  return text;
+}
+
 Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x, double* y,
                      double* yaw) {
   const std::vector<std::string> parts = SplitList(text);

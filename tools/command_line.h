@@ -45,6 +45,10 @@ void PrintOverview();
 // (so scripts and logs get exactly one line on failure).
 void Progress(const std::string& message);
 
+// "edgefit <cmd>" and the flags given (those not at their defaults), to
+// say in a report what made it.
+std::string CommandText(const Command& command);
+
 // Splits "a,b,,c" into {"a", "b", "c"}.
 std::vector<std::string> SplitList(const std::string& list);
 

@@ -30,6 +30,10 @@ DEFINE_string(out_ply, "",
 DEFINE_string(out_json, "",
               "Output JSON. edges: a summary (points, edge_points, timing_s, options); bench: "
               "every run.");
+DEFINE_string(out_report, "",
+              "Optional output: a self-contained HTML report (.html). fit: the scan against the "
+              "fitted model in 3D, coloured by distance, every joint's value and verdict; bench: "
+              "Tables 1-2 and the ablation plots.");
 DEFINE_int32(scanners, 3,
              "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
 DEFINE_double(spacing_mm, 1.7,

@@ -19,6 +19,7 @@ DECLARE_string(out);
 DECLARE_string(truth);
 DECLARE_string(out_ply);
 DECLARE_string(out_json);
+DECLARE_string(out_report);
 DECLARE_int32(scanners);
 DECLARE_double(spacing_mm);
 DECLARE_double(noise_mm);

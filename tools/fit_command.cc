@@ -42,10 +42,6 @@ DEFINE_string(out_urdf, "",
               "Optional output: the model with a world link and a fixed joint at "
               "the fitted base pose (joint values in a comment).");
 
-DEFINE_string(out_report, "",
-              "Optional output: a self-contained HTML report (.html): the scan against the "
-              "fitted model in 3D, coloured by distance, with every joint's value and verdict.");
-
 DEFINE_string(out_background, "",
               "Optional output: the scan with the fitted model's points removed (.ptx, .pcd, "
               ".ply or .e57): the scanned equipment is replaced by its model.");

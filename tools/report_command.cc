@@ -1,6 +1,8 @@
 // edgefit report: the HTML report of a fit from its result.json, whose
-// "inputs" (written by edgefit fit) name the model and the scans it read.
+// "inputs" (written by edgefit fit) name the model and the scans it read;
+// or of a bench from its runs (edgefit bench --out_json).
 //   edgefit report --result=result.json --out=report.html
+//   edgefit report --bench=runs.json --out=bench.html
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -8,6 +10,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
+#include "edgefit/bench/bench_tables.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/core/pose_json.h"
 #include "edgefit/io/scan_io.h"
@@ -16,6 +19,7 @@
 #include "edgefit/report/fit_report.h"
 
 DEFINE_string(result, "", "report: result.json of edgefit fit.");
+DEFINE_string(bench, "", "report: the runs of edgefit bench (its --out_json).");
 
 namespace edgefit::tools {
 namespace {
@@ -81,11 +85,29 @@ Status ReadFit(const json& result, const std::string& path, KinematicModel* mode
   return Status::Ok();
 }
 
+// The bench's tables and plots from its saved runs.
+int RunBench(const Command& command) {
+  std::string text;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(FLAGS_bench, &text));
+  const json runs = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (runs.is_discarded()) return BadInput(command, FLAGS_bench + ": not JSON");
+  const Status valid = CheckBenchRuns(runs);
+  if (!valid.ok()) return BadInput(command, FLAGS_bench + ": " + valid.message());
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, WriteTablesReport(BenchReport(runs, "edgefit bench, runs read from " + FLAGS_bench),
+                                 FLAGS_out));
+  std::printf("report: %s\n", FLAGS_out.c_str());
+  return 0;
+}
+
 int Run(const Command& command) {
-  if (FLAGS_result.empty()) return BadInput(command, "--result is required");
+  if (FLAGS_result.empty() == FLAGS_bench.empty()) {
+    return BadInput(command, "give one of --result (a fit) and --bench (a bench's runs)");
+  }
   if (FLAGS_out.empty()) return BadInput(command, "--out is required");
-  const FitReportOptions options;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out}));
+  if (!FLAGS_bench.empty()) return RunBench(command);
+  const FitReportOptions options;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitReportScripts(options));
   std::string text;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(FLAGS_result, &text));
@@ -122,13 +144,14 @@ int Run(const Command& command) {
 Command ReportCommand() {
   return {"report",
           "the HTML report of a fit from its result.json (the scan against the fitted model, "
-          "every joint's verdict)",
+          "every joint's verdict), or of a bench from its runs (tables, ablation plots)",
           "Usage:\n"
           "  edgefit report --result=result.json --out=report.html\n"
+          "  edgefit report --bench=runs.json --out=bench.html\n"
           "Example:\n"
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
           "  edgefit report --result=result.json --out=report.html",
-          {"result", "out"},
+          {"result", "bench", "out"},
           Run};
 }
 

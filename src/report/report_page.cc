@@ -2,34 +2,10 @@
 
 #include <string>
 
+#include "html.h"
+
 namespace edgefit {
 namespace {
-
-// Text safe inside an HTML element.
-std::string EscapeHtml(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// A script's text safe inside <script>: no "</" that could close it.
-std::string EscapeScript(const std::string& script) {
-  std::string out;
-  out.reserve(script.size());
-  for (size_t i = 0; i < script.size(); ++i) {
-    out += script[i];
-    if (script[i] == '<' && i + 1 < script.size() && script[i + 1] == '/') out += "\\";
-  }
-  return out;
-}
 
 constexpr char kStyle[] = R"css(
 body { font: 14px/1.4 sans-serif; margin: 0; color: #222; }

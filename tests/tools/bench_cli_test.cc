@@ -12,8 +12,27 @@ namespace {
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
+namespace fs = std::filesystem;
 
 const std::string kAssets = std::string(EDGEFIT_SOURCE_DIR) + "/assets/";
+
+// The bench's report of the refine_chains ablation (conveyor, one posture):
+// its tables as on stdout, a plot of the error against the axis, and, in
+// headless Chromium, no script error.
+void ExpectBenchReport(CliTest* test, const std::string& html, const std::string& markdown) {
+  const std::string page = Slurp(html);
+  for (const char* text : {"Table 2: translation error per joint [mm]", "carriage_1_joint",
+                           "Per setting (postures and repeats pooled)", "<svg",
+                           "prismatic joints: mean error against whole-chain refinement",
+                           "<td>refine_chain</td>", "<td>sequential</td>", "<text"}) {
+    EXPECT_NE(page.find(text), std::string::npos) << text;
+  }
+  EXPECT_NE(markdown.find("| conveyor | without | edge | refine_chain | 1 |"), std::string::npos);
+  EXPECT_EQ(page.find("src=\""), std::string::npos) << "the page loads no file";
+  if (!CliTest::HaveBrowser()) return;
+  std::string dom;
+  EXPECT_EQ(test->BrowserStatus(html, &dom), "ok: 3 tables, 1 charts") << html;
+}
 
 TEST_F(CliTest, BenchPrintsThePapersTables) {
   const RunResult r = Run("bench --assets=conveyor --conveyor_urdf=" + kAssets +
@@ -41,7 +60,7 @@ TEST_F(CliTest, BenchRunsTheProductOfItsAblationAxes) {
                           "conveyor/conveyor.urdf --conveyor_postures=" + kAssets +
                           "conveyor/postures.json --only=load --scenes=without "
                           "--weightings=edge --spacing_mm=8 --refine_chains=off,on --out_json=" +
-                          Path("ablation.json"));
+                          Path("ablation.json") + " --out_report=" + Path("ablation.html"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("## Per setting"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| conveyor | without | edge | sequential | 1 |"), std::string::npos)
@@ -57,6 +76,20 @@ TEST_F(CliTest, BenchRunsTheProductOfItsAblationAxes) {
   for (const auto& [joint, error] : json[1]["joint_errors"].items()) {
     EXPECT_LT(error.get<double>(), 0.002) << joint;
   }
+  ExpectBenchReport(this, Path("ablation.html"), r.out);
+
+  // edgefit report makes the same report again from the saved runs.
+  const RunResult again =
+      Run("report --bench=" + Path("ablation.json") + " --out=" + Path("again.html"));
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  ExpectBenchReport(this, Path("again.html"), r.out);
+  Write("not_runs.json", "[{\"asset\": \"conveyor\"}]");
+  ExpectBadInput("report --bench=" + Path("not_runs.json") + " --out=" + Path("x.html"),
+                 "not_runs.json: run 1: posture missing");
+  ExpectBadInput("report --bench=" + Path("ablation.json") + " --result=" + Path("r.json") +
+                     " --out=" + Path("x.html"),
+                 "give one of --result");
+  EXPECT_FALSE(fs::exists(Path("x.html")));
 }
 
 // From two stations the bundled robot's square base looks the same turned

@@ -77,6 +77,31 @@ class CliTest : public ::testing::Test {
     EXPECT_TRUE(r.out.empty()) << args << "\nstdout: " << r.out;
   }
 
+ public:
+  // Whether Debian's chromium is installed (the report tests open pages in it).
+  static bool HaveBrowser() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }
+
+  // Opens the page `html` offline in headless Chromium (software WebGL), from
+  // its own folder, and returns the text of its element #status after the
+  // page's scripts ran ("" when the page has none); *dom gets the page.
+  std::string BrowserStatus(const std::string& html, std::string* dom) {
+    const std::string dump = Path("dom.html");
+    const std::string browse =
+        "cd '" + fs::path(html).parent_path().string() +
+        "' && timeout 120 chromium --headless --no-sandbox --use-angle=swiftshader "
+        "--enable-unsafe-swiftshader --window-size=1280,800 --user-data-dir='" +
+        Path("profile") + "' --dump-dom 'file://" + html + "' >" + dump + " 2>" +
+        Path("chromium.log");
+    EXPECT_EQ(std::system(browse.c_str()), 0) << Slurp(Path("chromium.log"));
+    *dom = Slurp(dump);
+    const std::string open = "<div id=\"status\">";
+    const size_t at = dom->find(open);
+    if (at == std::string::npos) return "";
+    const size_t from = at + open.size();
+    return dom->substr(from, dom->find("</div>", from) - from);
+  }
+
+ protected:
   fs::path dir_;
 };
 

@@ -39,22 +39,11 @@ TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   }
   EXPECT_FALSE(fs::exists(Path("report/arm report_station_3.png")));
 
-  if (std::system("command -v chromium >/dev/null 2>&1") != 0) {
+  if (!HaveBrowser()) {
     GTEST_SKIP() << "chromium is not installed (./scripts/install-deps.sh installs it)";
   }
-  const std::string dom = Path("dom.html");
-  const std::string browse =
-      "cd '" + Path("report") + "' && timeout 120 chromium --headless --no-sandbox "
-      "--use-angle=swiftshader --enable-unsafe-swiftshader --window-size=1280,800 "
-      "--user-data-dir='" + Path("profile") + "' --dump-dom 'file://" + report + "' >" + dom +
-      " 2>" + Path("chromium.log");
-  ASSERT_EQ(std::system(browse.c_str()), 0) << Slurp(Path("chromium.log"));
-  const std::string page = Slurp(dom);
-  const std::string open = "<div id=\"status\">";
-  const size_t at = page.find(open);
-  ASSERT_NE(at, std::string::npos) << page.substr(0, 2000);
-  const size_t from = at + open.size();
-  const std::string status = page.substr(from, page.find("</div>", from) - from);
+  std::string page;
+  const std::string status = BrowserStatus(report, &page);
   const std::string ok = "ok: ", drawn = " pixels drawn";
   ASSERT_EQ(status.compare(0, ok.size(), ok), 0) << status;
   ASSERT_GT(status.size(), ok.size() + drawn.size()) << status;

@@ -1,8 +1,7 @@
-// The runs of `edgefit bench` and their report: Tables 1 and 2 (error
-// per joint), base and time per stage, the summary per setting, the JSON
-// of a run.
-#ifndef EDGEFIT_TOOLS_BENCH_REPORT_H_
-#define EDGEFIT_TOOLS_BENCH_REPORT_H_
+// The runs of `edgefit bench`: their settings, labels and JSON (from which
+// bench_tables.h makes the tables and plots).
+#ifndef EDGEFIT_TOOLS_BENCH_RUNS_H_
+#define EDGEFIT_TOOLS_BENCH_RUNS_H_
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,6 +15,7 @@ namespace edgefit::tools {
 struct ScanSetting {
   std::string accessories;  // "without" / "with"
   double noise_mm = 1.0;
+  double spacing_mm = 1.7;
   int scanners = 3;
   int repeat = 0;
   std::string sensor = "ideal";  // edgefit scan --sensor
@@ -42,7 +42,7 @@ struct Run {
 
 // The axes given more than one value, for the labels.
 struct Axes {
-  bool noise = false, scanners = false, repeat = false, sensor = false;
+  bool noise = false, spacing = false, scanners = false, repeat = false, sensor = false;
   bool w_high = false, lambda = false, loss = false, sweep_step = false, search = false,
        refine = false;
 };
@@ -52,18 +52,10 @@ std::string Number(double value);
 // The varied settings of a run, e.g. "w_high=5" ("-" when none varies).
 std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& fit);
 
-// Table 1 (prismatic false: revolute joints, degrees) or Table 2 (prismatic
-// joints, mm) for one asset: a row per run, a column per joint.
-void PrintJointTable(const std::vector<Run>& runs, const std::string& asset, bool prismatic,
-                     bool labelled);
-// A row per run: base (against the truth and in the survey's frame), tool
-// tip, time per stage, verdict.
-void PrintRunTable(const std::vector<Run>& runs);
-// Per setting: mean, p95 and max per joint kind, tool tip, failure and
-// not-ok rates, time.
-void PrintSummary(const std::vector<Run>& runs);
+// The run as an object of the JSON array of `edgefit bench --out_json`
+// (bench_tables.h reads it).
 nlohmann::json RunJson(const Run& run);
 
 }  // namespace edgefit::tools
 
-#endif  // EDGEFIT_TOOLS_BENCH_REPORT_H_
+#endif  // EDGEFIT_TOOLS_BENCH_RUNS_H_

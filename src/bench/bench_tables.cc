@@ -1,0 +1,442 @@
+#include "edgefit/bench/bench_tables.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "edgefit/bench/bench_case.h"
+
+namespace edgefit {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string Format(const char* format, double value) {
+  char text[48];
+  std::snprintf(text, sizeof(text), format, value);
+  return text;
+}
+
+// A number of a run; null (how JSON writes NaN) reads as NaN.
+double Number(const json& object, const char* key) {
+  const json& v = object.at(key);
+  return v.is_number() ? v.get<double>() : kNaN;
+}
+
+bool IsNumberOrNull(const json& v) { return v.is_number() || v.is_null(); }
+
+// The independent joints of a run in the model's order (joint_names; files
+// written before it have the keys' order), and whether each is prismatic.
+std::vector<std::string> JointNames(const json& run) {
+  std::vector<std::string> names;
+  if (run.contains("joint_names")) {
+    for (const json& n : run["joint_names"]) names.push_back(n.get<std::string>());
+    return names;
+  }
+  for (const char* key : {"joint_errors", "unobservable_joint_errors"}) {
+    for (const auto& item : run[key].items()) names.push_back(item.key());
+  }
+  return names;
+}
+
+bool IsPrismatic(const json& run, const std::string& joint) {
+  const json& p = run["prismatic_joints"];
+  return std::find(p.begin(), p.end(), joint) != p.end();
+}
+
+// The error of `joint` in degrees or mm; *unobservable when the fit called
+// it so; NaN when the run has none.
+double JointError(const json& run, const std::string& joint, bool* unobservable) {
+  const double scale = IsPrismatic(run, joint) ? 1e3 : 1.0 / kDeg;
+  *unobservable = false;
+  if (run["joint_errors"].contains(joint)) return scale * Number(run["joint_errors"], joint.c_str());
+  if (run["unobservable_joint_errors"].contains(joint)) {
+    *unobservable = true;
+    return scale * Number(run["unobservable_joint_errors"], joint.c_str());
+  }
+  return kNaN;
+}
+
+std::string Verdict(const json& run) {
+  return run["failed"].get<bool>() ? "FAILED" : (run["ok"].get<bool>() ? "ok" : "not ok");
+}
+
+// A setting's value as text ("%g" for numbers, off/on for booleans).
+std::string SettingText(const json& value) {
+  if (value.is_boolean()) return value.get<bool>() ? "on" : "off";
+  if (value.is_number()) return Format("%g", value.get<double>());
+  if (value.is_string()) return value.get<std::string>();
+  return "-";
+}
+
+// Whether any run carries a label (a setting other than scene and weights
+// varies) and whether repeats vary.
+bool Labelled(const json& runs) {
+  for (const json& run : runs) {
+    if (run["label"] != "-") return true;
+  }
+  return false;
+}
+bool Repeated(const json& runs) {
+  std::set<std::string> repeats;
+  for (const json& run : runs) repeats.insert(SettingText(run["settings"].value("repeat", json())));
+  return repeats.size() > 1;
+}
+
+Table JointTable(const json& runs, const std::string& asset, bool prismatic, bool labelled) {
+  Table table;
+  std::vector<std::string> joints;
+  for (const json& run : runs) {
+    if (run["asset"] != asset) continue;
+    for (const std::string& j : JointNames(run)) {
+      if (IsPrismatic(run, j) == prismatic &&
+          std::find(joints.begin(), joints.end(), j) == joints.end()) {
+        joints.push_back(j);
+      }
+    }
+  }
+  if (joints.empty()) return table;
+  table.caption = asset + (prismatic ? " (mm):" : " (degrees):");
+  table.header = {"posture", "accessories", "weights"};
+  if (labelled) table.header.push_back("settings");
+  table.header.insert(table.header.end(), joints.begin(), joints.end());
+  bool any_unobservable = false;
+  for (const json& run : runs) {
+    if (run["asset"] != asset) continue;
+    std::vector<std::string> row = {run["posture"], run["accessories"], run["weighting"]};
+    if (labelled) row.push_back(run["label"]);
+    for (const std::string& j : joints) {
+      bool unobservable = false;
+      const double error = JointError(run, j, &unobservable);
+      any_unobservable = any_unobservable || unobservable;
+      row.push_back(!std::isfinite(error) ? "-"
+                    : unobservable        ? "(" + Format("%.4f", error) + ")"
+                                          : Format("%.4f", error));
+    }
+    table.rows.push_back(row);
+  }
+  if (any_unobservable) {
+    table.note =
+        "In brackets: joints the fit called unobservable (reported by convention, not scored).";
+  }
+  return table;
+}
+
+Table RunTable(const json& runs) {
+  Table table;
+  table.heading = "Base, tool tip and time per stage";
+  table.header = {"asset",         "posture",    "accessories",  "weights",
+                  "settings",      "points",     "base [mm]",    "base [deg]",
+                  "in survey frame [mm, deg]",   "tool tip [mm]", "edges",
+                  "base rough",    "base precise", "chain",      "refine",
+                  "total",         "ok"};
+  for (const json& run : runs) {
+    const json& t = run["timing_s"];
+    auto seconds = [&](const char* key) { return Format("%.2f s", Number(t, key)); };
+    table.rows.push_back(
+        {run["asset"], run["posture"], run["accessories"], run["weighting"], run["label"],
+         Format("%.2f M", 1e-6 * Number(run, "points")),
+         Format("%.3f", 1e3 * Number(run, "base_translation_m")),
+         Format("%.4f", Number(run, "base_rotation_rad") / kDeg),
+         Format("%.3f", 1e3 * Number(run, "base_survey_translation_m")) + ", " +
+             Format("%.4f", Number(run, "base_survey_rotation_rad") / kDeg),
+         Format("%.3f", 1e3 * Number(run, "tool_tip_m")), seconds("edges"), seconds("base_rough"),
+         seconds("base_precise"), seconds("chain"), seconds("refine"), seconds("total"),
+         Verdict(run)});
+  }
+  return table;
+}
+
+// "mean", "p95", "max" of `errors` with `format`, or dashes for none.
+std::vector<std::string> StatsCells(const std::vector<double>& errors, const char* format) {
+  if (errors.empty()) return {"-", "-", "-"};
+  const ErrorStats stats = SummarizeErrors(errors);
+  return {Format(format, stats.mean), Format(format, stats.p95), Format(format, stats.max)};
+}
+
+// The observable joints' errors of a run, revolute [deg] and prismatic [mm].
+void PoolErrors(const json& run, std::vector<double>* revolute, std::vector<double>* prismatic) {
+  for (const auto& [joint, value] : run["joint_errors"].items()) {
+    if (!value.is_number()) continue;
+    if (IsPrismatic(run, joint)) {
+      prismatic->push_back(1e3 * value.get<double>());
+    } else {
+      revolute->push_back(value.get<double>() / kDeg);
+    }
+  }
+}
+
+Table SummaryTable(const json& runs) {
+  Table table;
+  table.heading = "Per setting (postures and repeats pooled)";
+  table.header = {"asset",          "accessories", "weights",       "settings",
+                  "fits",           "revolute mean", "p95",         "max [deg]",
+                  "prismatic mean", "p95",         "max [mm]",      "tool tip mean",
+                  "p95 [mm]",       "base mean [mm]", "in survey frame", "failed",
+                  "not ok",         "mean time [s]"};
+  std::vector<std::string> keys;
+  std::map<std::string, std::vector<const json*>> groups;
+  for (const json& run : runs) {
+    const std::string key = run["asset"].get<std::string>() + "|" +
+                            run["accessories"].get<std::string>() + "|" +
+                            run["weighting"].get<std::string>() + "|" +
+                            run["label"].get<std::string>();
+    if (groups.count(key) == 0) keys.push_back(key);
+    groups[key].push_back(&run);
+  }
+  for (const std::string& key : keys) {
+    const std::vector<const json*>& group = groups[key];
+    std::vector<double> revolute, prismatic, tip, base, base_survey, time;
+    int failed = 0, not_ok = 0;
+    for (const json* run : group) {
+      PoolErrors(*run, &revolute, &prismatic);
+      tip.push_back(1e3 * Number(*run, "tool_tip_m"));
+      base.push_back(1e3 * Number(*run, "base_translation_m"));
+      base_survey.push_back(1e3 * Number(*run, "base_survey_translation_m"));
+      time.push_back(Number((*run)["timing_s"], "total"));
+      failed += (*run)["failed"].get<bool>();
+      not_ok += !(*run)["ok"].get<bool>();
+    }
+    const json& first = *group.front();
+    const double n = static_cast<double>(group.size());
+    std::vector<std::string> row = {first["asset"], first["accessories"], first["weighting"],
+                                    first["label"], std::to_string(group.size())};
+    for (const std::string& cell : StatsCells(revolute, "%.4f")) row.push_back(cell);
+    for (const std::string& cell : StatsCells(prismatic, "%.3f")) row.push_back(cell);
+    const ErrorStats t = SummarizeErrors(tip);
+    row.insert(row.end(), {Format("%.3f", t.mean), Format("%.3f", t.p95),
+                           Format("%.3f", SummarizeErrors(base).mean),
+                           Format("%.3f", SummarizeErrors(base_survey).mean),
+                           Format("%.0f%%", 100.0 * failed / n),
+                           Format("%.0f%%", 100.0 * not_ok / n),
+                           Format("%.1f", SummarizeErrors(time).mean)});
+    table.rows.push_back(row);
+  }
+  return table;
+}
+
+// An ablation axis: its key in a run's "settings", how the plots name it,
+// whether its values are names rather than numbers.
+struct AblationAxis {
+  const char* key;
+  const char* name;
+  bool categorical;
+};
+constexpr AblationAxis kAxes[] = {
+    {"w_high", "w_high (Eq. 6)", false},
+    {"lambda", "lambda (Eq. 10/14)", false},
+    {"loss", "loss of the precise stages", true},
+    {"sweep_step_deg", "sweep step [deg]", false},
+    {"search", "correspondence search", true},
+    {"refine_chain", "whole-chain refinement", true},
+    {"noise_mm", "range noise sigma [mm]", false},
+    {"scanners", "scanners", false},
+    {"sensor", "sensor", true},
+    {"spacing_mm", "scan spacing [mm]", false},
+};
+
+// The axes whose values differ between the runs.
+std::vector<const AblationAxis*> VariedAxes(const json& runs) {
+  std::vector<const AblationAxis*> varied;
+  for (const AblationAxis& axis : kAxes) {
+    std::set<std::string> values;
+    for (const json& run : runs) values.insert(SettingText(run["settings"].value(axis.key, json())));
+    if (values.size() > 1) varied.push_back(&axis);
+  }
+  return varied;
+}
+
+// Mean error against one axis: a series per (asset, scene, weights, the
+// other axes' values); `prismatic`: prismatic joints in mm, else revolute
+// in degrees. An empty chart when no run has such joints.
+Chart AxisChart(const json& runs, const AblationAxis& axis,
+                const std::vector<const AblationAxis*>& varied, bool prismatic) {
+  Chart chart;
+  chart.title = std::string(prismatic ? "prismatic" : "revolute") + " joints: mean error against " +
+                axis.name;
+  chart.x_label = axis.name;
+  chart.y_label = prismatic ? "mean error [mm]" : "mean error [deg]";
+  // The axis' values, in order (numbers sorted, names as they first came).
+  std::vector<std::string> values;
+  std::vector<double> numbers;
+  for (const json& run : runs) {
+    const json& v = run["settings"].value(axis.key, json());
+    const std::string text = SettingText(v);
+    if (std::find(values.begin(), values.end(), text) != values.end()) continue;
+    values.push_back(text);
+    numbers.push_back(v.is_number() ? v.get<double>() : kNaN);
+  }
+  if (!axis.categorical) {
+    std::vector<size_t> order(values.size());
+    for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return numbers[a] < numbers[b]; });
+    std::vector<std::string> v2;
+    std::vector<double> n2;
+    for (const size_t k : order) v2.push_back(values[k]), n2.push_back(numbers[k]);
+    values = v2;
+    numbers = n2;
+    chart.log_x = numbers.front() > 0.0 && numbers.back() / numbers.front() >= 10.0;
+  } else {
+    chart.categories = values;
+  }
+  std::vector<std::string> series_keys;
+  std::map<std::string, std::vector<std::vector<double>>> pooled;  // key -> per value
+  for (const json& run : runs) {
+    std::string key = run["asset"].get<std::string>() + ", " +
+                      run["accessories"].get<std::string>() + " accessories, " +
+                      run["weighting"].get<std::string>() + " weights";
+    for (const AblationAxis* other : varied) {
+      if (other != &axis) key += ", " + std::string(other->key) + "=" +
+                                 SettingText(run["settings"].value(other->key, json()));
+    }
+    if (pooled.count(key) == 0) {
+      series_keys.push_back(key);
+      pooled[key].resize(values.size());
+    }
+    const size_t k = static_cast<size_t>(
+        std::find(values.begin(), values.end(), SettingText(run["settings"].value(axis.key, json()))) -
+        values.begin());
+    std::vector<double> revolute, prismatic_errors;
+    PoolErrors(run, &revolute, &prismatic_errors);
+    const std::vector<double>& errors = prismatic ? prismatic_errors : revolute;
+    pooled[key][k].insert(pooled[key][k].end(), errors.begin(), errors.end());
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const std::string& key : series_keys) {
+    ChartSeries series;
+    series.name = key;
+    bool any = false;
+    for (size_t k = 0; k < values.size(); ++k) {
+      series.x.push_back(axis.categorical ? static_cast<double>(k) : numbers[k]);
+      const std::vector<double>& errors = pooled[key][k];
+      const double mean = errors.empty() ? kNaN : SummarizeErrors(errors).mean;
+      series.y.push_back(mean);
+      if (std::isfinite(mean)) {
+        any = true;
+        if (mean > 0.0) lo = std::min(lo, mean);
+        hi = std::max(hi, mean);
+      }
+    }
+    if (any) chart.series.push_back(series);
+  }
+  chart.log_y = std::isfinite(lo) && hi / lo >= 20.0;
+  return chart;
+}
+
+}  // namespace
+
+Status CheckBenchRuns(const json& runs) {
+  if (!runs.is_array() || runs.empty()) {
+    return Status::Error("not the runs of edgefit bench --out_json (a non-empty JSON array)");
+  }
+  for (size_t k = 0; k < runs.size(); ++k) {
+    const json& run = runs[k];
+    auto fail = [k](const std::string& what) {
+      return Status::Error("run " + std::to_string(k + 1) + ": " + what);
+    };
+    if (!run.is_object()) return fail("not an object");
+    for (const char* key : {"asset", "posture", "accessories", "weighting", "label"}) {
+      if (!run.contains(key) || !run[key].is_string()) return fail(std::string(key) + " missing");
+    }
+    for (const char* key : {"points", "base_translation_m", "base_rotation_rad",
+                            "base_survey_translation_m", "base_survey_rotation_rad", "tool_tip_m"}) {
+      if (!run.contains(key) || !IsNumberOrNull(run[key])) return fail(std::string(key) + " missing");
+    }
+    for (const char* key : {"ok", "failed"}) {
+      if (!run.contains(key) || !run[key].is_boolean()) return fail(std::string(key) + " missing");
+    }
+    for (const char* key : {"settings", "joint_errors", "unobservable_joint_errors", "timing_s"}) {
+      if (!run.contains(key) || !run[key].is_object()) return fail(std::string(key) + " missing");
+    }
+    for (const char* key : {"joint_errors", "unobservable_joint_errors"}) {
+      for (const auto& item : run[key].items()) {
+        if (!IsNumberOrNull(item.value())) return fail(std::string(key) + " holds a non-number");
+      }
+    }
+    for (const char* key : {"edges", "base_rough", "base_precise", "chain", "refine", "total"}) {
+      if (!run["timing_s"].contains(key) || !IsNumberOrNull(run["timing_s"][key])) {
+        return fail(std::string("timing_s.") + key + " missing");
+      }
+    }
+    if (!run.contains("prismatic_joints") || !run["prismatic_joints"].is_array()) {
+      return fail("prismatic_joints missing");
+    }
+    if (run.contains("joint_names")) {
+      if (!run["joint_names"].is_array()) return fail("joint_names is not an array");
+      for (const json& n : run["joint_names"]) {
+        if (!n.is_string()) return fail("joint_names holds a non-string");
+      }
+    }
+  }
+  return Status::Ok();
+}
+
+std::vector<Table> BenchTables(const json& runs) {
+  std::vector<std::string> assets;
+  for (const json& run : runs) {
+    if (std::find(assets.begin(), assets.end(), run["asset"]) == assets.end()) {
+      assets.push_back(run["asset"]);
+    }
+  }
+  const bool labelled = Labelled(runs);
+  std::vector<Table> tables;
+  for (const bool prismatic : {false, true}) {
+    Table heading;
+    heading.heading = prismatic ? "Table 2: translation error per joint [mm]"
+                                : "Table 1: rotation error per joint [deg]";
+    std::vector<Table> per_asset;
+    for (const std::string& asset : assets) {
+      Table table = JointTable(runs, asset, prismatic, labelled);
+      if (!table.header.empty()) per_asset.push_back(table);
+    }
+    if (per_asset.empty()) {
+      heading.note = prismatic ? "No prismatic joints in these assets."
+                               : "No revolute joints in these assets.";
+    }
+    tables.push_back(heading);
+    tables.insert(tables.end(), per_asset.begin(), per_asset.end());
+  }
+  tables.push_back(RunTable(runs));
+  if (labelled || Repeated(runs)) tables.push_back(SummaryTable(runs));
+  return tables;
+}
+
+std::vector<Chart> AblationCharts(const json& runs) {
+  std::vector<Chart> charts;
+  const std::vector<const AblationAxis*> varied = VariedAxes(runs);
+  for (const AblationAxis* axis : varied) {
+    for (const bool prismatic : {false, true}) {
+      Chart chart = AxisChart(runs, *axis, varied, prismatic);
+      if (!chart.series.empty()) charts.push_back(chart);
+    }
+  }
+  return charts;
+}
+
+TablesReport BenchReport(const json& runs, const std::string& command) {
+  TablesReport report;
+  report.title = "edgefit bench";
+  int failed = 0, not_ok = 0;
+  for (const json& run : runs) {
+    failed += run["failed"].get<bool>();
+    not_ok += !run["ok"].get<bool>();
+  }
+  report.lines.push_back(std::to_string(runs.size()) + " fits: " + std::to_string(failed) +
+                         " failed (a revolute joint off by more than 0.5 deg or a prismatic one "
+                         "by more than 5 mm), " + std::to_string(not_ok) + " said not ok.");
+  if (!command.empty()) report.lines.push_back("Made by: " + command);
+  report.charts_heading = "Ablation plots";
+  report.charts = AblationCharts(runs);
+  report.tables = BenchTables(runs);
+  return report;
+}
+
+}  // namespace edgefit

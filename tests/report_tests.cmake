@@ -1,0 +1,2 @@
+edgefit_add_test(report_test SOURCES report/table_test.cc report/chart_test.cc
+                 LIBS edgefit::report)

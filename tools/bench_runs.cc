@@ -1,0 +1,87 @@
+#include "bench_runs.h"
+
+#include <cstdio>
+
+namespace edgefit::tools {
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
+
+std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& fit) {
+  std::vector<std::string> parts;
+  if (axes.sensor) parts.push_back("sensor=" + scan.sensor);
+  if (axes.noise) parts.push_back("noise=" + Number(scan.noise_mm) + "mm");
+  if (axes.spacing) parts.push_back("spacing=" + Number(scan.spacing_mm) + "mm");
+  if (axes.scanners) parts.push_back("scanners=" + std::to_string(scan.scanners));
+  if (axes.w_high) parts.push_back("w_high=" + Number(fit.w_high));
+  if (axes.lambda) parts.push_back("lambda=" + Number(fit.lambda));
+  if (axes.loss) parts.push_back("loss=" + fit.loss);
+  if (axes.sweep_step) parts.push_back("sweep_step=" + Number(fit.sweep_step_deg) + "deg");
+  if (axes.search) parts.push_back("search=" + fit.search);
+  if (axes.refine) parts.push_back(fit.refine_chain ? "refine_chain" : "sequential");
+  std::string label;
+  for (const std::string& p : parts) label += (label.empty() ? "" : " ") + p;
+  return label.empty() ? "-" : label;
+}
+
+nlohmann::json RunJson(const Run& run) {
+  nlohmann::json joints = nlohmann::json::object(), prismatic = nlohmann::json::array(),
+                 unobservable = nlohmann::json::object(), verdicts = nlohmann::json::object();
+  nlohmann::json names = nlohmann::json::array();
+  for (const JointError& e : run.result.errors.joints) {
+    if (!e.independent) continue;
+    names.push_back(e.name);
+    (e.unobservable ? unobservable : joints)[e.name] = e.error;
+    if (e.prismatic) prismatic.push_back(e.name);
+  }
+  for (const BodyQuality& b : run.result.bodies) {
+    if (!b.joint.empty()) verdicts[b.joint] = JointVerdictName(b.verdict);
+  }
+  const FitTimings& t = run.result.timings;
+  return {{"asset", run.asset},
+          {"posture", run.posture},
+          {"accessories", run.scan.accessories},
+          {"weighting", run.fit.weighting},
+          {"label", run.label},
+          {"settings",
+           {{"noise_mm", run.scan.noise_mm},
+            {"spacing_mm", run.scan.spacing_mm},
+            {"scanners", run.scan.scanners},
+            {"repeat", run.scan.repeat},
+            {"sensor", run.scan.sensor},
+            {"w_high", run.fit.w_high},
+            {"lambda", run.fit.lambda},
+            {"loss", run.fit.loss},
+            {"sweep_step_deg", run.fit.sweep_step_deg},
+            {"search", run.fit.search},
+            {"refine_chain", run.fit.refine_chain}}},
+          {"points", run.result.points},
+          {"joint_names", names},  // the independent joints in the model's order
+          {"joint_errors", joints},  // observable independent joints [rad] or [m]
+          {"unobservable_joint_errors", unobservable},  // reported by convention
+          {"joint_verdicts", verdicts},
+          {"prismatic_joints", prismatic},
+          {"base_translation_m", run.result.errors.base_translation},
+          {"base_rotation_rad", run.result.errors.base_rotation},
+          {"base_survey_translation_m", run.result.errors.base_translation_survey},
+          {"base_survey_rotation_rad", run.result.errors.base_rotation_survey},
+          {"tool_tip_link", run.result.errors.tool_tip_link},
+          {"tool_tip_m", run.result.errors.tool_tip},
+          {"covariance_ok", run.result.chain.covariance_ok},
+          {"timing_s",
+           {{"edges", t.edges},
+            {"base_rough", t.base_rough},
+            {"base_precise", t.base_precise},
+            {"chain", t.chain},
+            {"refine", t.refine},
+            {"alternatives", t.alternatives},
+            {"total", t.total}}},
+          {"ok", run.result.ok},
+          {"message", run.result.message},
+          {"failed", run.result.failed}};
+}
+
+}  // namespace edgefit::tools
