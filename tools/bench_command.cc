@@ -72,7 +72,7 @@ DEFINE_string(refine_chains, "",
               "--refine_chain).");
 DEFINE_string(noises_mm, "", "Bench ablation: range noise sigmas [mm] (default: --noise_mm).");
 DEFINE_string(spacings_mm, "",
-              "Bench ablation: scan spacings at 10 m [mm] (default: --spacing_mm).");
+              "Bench ablation: point spacings at the asset's distance [mm] (default: --spacing_mm).");
 DEFINE_string(sensors, "ideal",
               "Bench axis: sensors (as edgefit scan --sensor): ideal, realistic, or effects "
               "joined by '+' (mixed_pixels, incidence, stations, as_built, jackets).");

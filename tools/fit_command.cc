@@ -233,9 +233,11 @@ int RunFit(const Command& command) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<Pose> corrections;  // the stations as the fit registered them
     for (const StationCorrection& c : fit.stations.stations) corrections.push_back(c.correction);
+    FitReportOptions report_options;
+    report_options.edges = options.edges;  // the edge map as the fit's options find it
     const Status status =
         WriteFitReport(model, fit.q, fit.T_world_base, has_roi ? in_roi : scans, corrections,
-                       shown, "edgefit fit: " + FLAGS_urdf, FitReportOptions(), FLAGS_out_report,
+                       shown, "edgefit fit: " + FLAGS_urdf, report_options, FLAGS_out_report,
                        &written);
     if (!status.ok()) return fail(status);
   }

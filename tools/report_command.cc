@@ -107,12 +107,16 @@ int Run(const Command& command) {
   if (FLAGS_out.empty()) return BadInput(command, "--out is required");
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out}));
   if (!FLAGS_bench.empty()) return RunBench(command);
-  const FitReportOptions options;
+  FitReportOptions options;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitReportScripts(options));
   std::string text;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(FLAGS_result, &text));
   const json result = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (result.is_discarded()) return BadInput(command, FLAGS_result + ": not JSON");
+  const json& fit_options = result.value("options", json::object());
+  if (fit_options.is_object() && fit_options.value("w_high", json()).is_number()) {
+    options.edges.w_high = fit_options["w_high"].get<double>();  // the edge map's Eq. (6)
+  }
   KinematicModel model;
   std::vector<double> q;
   Pose T_world_base;

@@ -70,11 +70,13 @@ std::string OrbitControlsPath(const FitReportOptions& options) {
 }
 
 // The scan near the model (in `crop`, world), every stride-th valid point in
-// cell order, with its distance to the model in 0.1 mm (capped at 6.5 m)
-// and the link of the nearest surface sample.
+// cell order, with its distance to the model in 0.1 mm (capped at 6.5 m),
+// the link of the nearest surface sample and, with `edges`, whether it lies
+// in a valid edge region (w_edge > 1).
 nlohmann::json ShownPoints(const ScanSet& scans, const std::vector<Pose>& T_world_scanner,
                            const Eigen::AlignedBox3d& crop, const Eigen::Vector3d& origin,
-                           const ModelDistance& model_distance, const FitReportOptions& options) {
+                           const ModelDistance& model_distance, const EdgeDetectionResult* edges,
+                           const FitReportOptions& options) {
   auto world = [&](size_t s, size_t i) {
     return T_world_scanner[s] * scans.scans[s].point_scanner(i).cast<double>();
   };
@@ -85,6 +87,7 @@ nlohmann::json ShownPoints(const ScanSet& scans, const std::vector<Pose>& T_worl
   }
   const size_t stride = std::max<size_t>(1, (near + options.max_points - 1) / options.max_points);
   std::vector<Eigen::Vector3f> shown;
+  std::vector<uint8_t> on_edge;
   shown.reserve(near / stride + 1);
   size_t k = 0;
   for (size_t s = 0; s < scans.scans.size(); ++s) {
@@ -92,7 +95,9 @@ nlohmann::json ShownPoints(const ScanSet& scans, const std::vector<Pose>& T_worl
     for (size_t i = 0; i < scan.size(); ++i) {
       if (!scan.IsValid(i)) continue;
       const Eigen::Vector3d p = world(s, i);
-      if (crop.contains(p) && k++ % stride == 0) shown.push_back((p - origin).cast<float>());
+      if (!crop.contains(p) || k++ % stride != 0) continue;
+      shown.push_back((p - origin).cast<float>());
+      if (edges != nullptr) on_edge.push_back(edges->w_edge[s][i] > 1.0f);
     }
   }
   std::vector<uint16_t> distance(shown.size(), std::numeric_limits<uint16_t>::max());
@@ -109,12 +114,39 @@ nlohmann::json ShownPoints(const ScanSet& scans, const std::vector<Pose>& T_worl
   std::vector<float> positions;
   positions.reserve(3 * shown.size());
   for (const Eigen::Vector3f& p : shown) positions.insert(positions.end(), {p.x(), p.y(), p.z()});
-  return {{"count", shown.size()},
-          {"near", near},
-          {"stride", stride},
-          {"positions", Base64(positions)},
-          {"distance_0.1mm", Base64(distance)},
-          {"link", Base64(link)}};
+  nlohmann::json points = {{"count", shown.size()},
+                           {"near", near},
+                           {"stride", stride},
+                           {"positions", Base64(positions)},
+                           {"distance_0.1mm", Base64(distance)},
+                           {"link", Base64(link)}};
+  if (edges != nullptr) points["edge"] = Base64(on_edge);
+  return points;
+}
+
+// Sec. 4 on the scans for the edge map; *map tells the page what it found
+// or why there is none. Returns whether the map is there.
+bool EdgeMap(const ScanSet& scans, const FitReportOptions& options, EdgeDetectionResult* edges,
+             nlohmann::json* map) {
+  if (!options.edge_map) {
+    *map = {{"available", false}, {"why", "not asked for"}};
+    return false;
+  }
+  EdgeDetectionOptions marking = options.edges;  // the regions, even when w_high is 1
+  marking.w_high = std::max(2.0, marking.w_high);
+  const Status status = DetectEdges(scans, marking, edges);
+  if (!status.ok()) {
+    *map = {{"available", false}, {"why", status.message()}};
+    return false;
+  }
+  *map = {{"available", true},
+          {"w_high", options.edges.w_high},
+          {"points", edges->points},
+          {"candidates", edges->candidates},
+          {"edge_points", edges->edge_points},
+          {"regions", edges->regions},
+          {"seconds", edges->timings.total}};
+  return true;
 }
 
 // What each station saw (StationImage), for the page; *pngs gets each PNG
@@ -177,6 +209,8 @@ bool FitReportOptions::IsValid(std::string* error) const {
   }
   if (!(sample_spacing > 0.0)) return fail("sample_spacing must be > 0");
   if (max_image_size < 16) return fail("max_image_size must be >= 16");
+  std::string edge_error;
+  if (edge_map && !edges.IsValid(&edge_error)) return fail("edges: " + edge_error);
   return true;
 }
 
@@ -231,6 +265,9 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
   std::vector<std::pair<std::string, std::string>> files;  // the PNGs, then the page
   EDGEFIT_RETURN_IF_ERROR(StationViews(scans, T_world_scanner, crop, origin, model_distance,
                                        options, path, &stations, &files));
+  EdgeDetectionResult edges;
+  nlohmann::json edge_map;
+  const bool has_edges = EdgeMap(scans, options, &edges, &edge_map);
   nlohmann::json joint_types = nlohmann::json::object();
   for (const Joint& j : model.joints()) {
     if (j.IsMoving()) joint_types[j.name] = j.type == JointType::kPrismatic ? "prismatic" : "revolute";
@@ -254,7 +291,9 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
       {"joint_types", joint_types},
       {"link_names", link_names},
       {"links", LinkMeshes(model, T_world_link, origin)},
-      {"points", ShownPoints(scans, T_world_scanner, crop, origin, model_distance, options)}};
+      {"edge_map", edge_map},
+      {"points", ShownPoints(scans, T_world_scanner, crop, origin, model_distance,
+                             has_edges ? &edges : nullptr, options)}};
   files.emplace_back(path, ReportPage(title, three, orbit, data.dump()));
   return WriteAll(files, written);
 }

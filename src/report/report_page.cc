@@ -211,24 +211,38 @@ const controls = new THREE.OrbitControls(camera, renderer.domElement);
 controls.target.copy(centre);
 controls.update();
 
+// Point colours: by distance (optionally only the points far from the
+// model), or the edge map (points in valid edge regions, Eq. 6, red).
+const edges = data.points.edge ? decode(data.points.edge, Uint8Array) : null;
+function recolour() {
+  const mode = document.getElementById('colour-by').value;
+  const farOnly = document.getElementById('far-only').checked;
+  const c = cloudGeometry.getAttribute('color');
+  for (let i = 0; i < dist.length; ++i) {
+    const d = dist[i] * 1e-4;
+    if (mode === 'edges' && edges) {
+      if (edges[i]) { c.array[3 * i] = 0.85; c.array[3 * i + 1] = 0.1; c.array[3 * i + 2] = 0.1; }
+      else c.array[3 * i] = c.array[3 * i + 1] = c.array[3 * i + 2] = 0.82;
+    } else if (farOnly && d <= farAway) {
+      c.array[3 * i] = c.array[3 * i + 1] = c.array[3 * i + 2] = 0.93;
+    } else {
+      colour(d, c.array, 3 * i);
+    }
+  }
+  c.needsUpdate = true;
+  cloud.material.size = farOnly || mode === 'edges' ? 3 : 2;
+  document.getElementById('distance-legend').style.display = mode === 'edges' ? 'none' : '';
+  document.getElementById('edge-legend').style.display = mode === 'edges' ? '' : 'none';
+}
 function render() {
   cloud.visible = document.getElementById('show-scan').checked;
   model.visible = document.getElementById('show-model').checked;
-  const farOnly = document.getElementById('far-only').checked;
-  cloud.material.size = farOnly ? 3 : 2;
-  if (farOnly !== render.farOnly) {
-    const sizes = farOnly ? dist.map(d => d * 1e-4 > farAway) : null;
-    const c = cloudGeometry.getAttribute('color');
-    for (let i = 0; i < dist.length; ++i) {
-      if (farOnly && !sizes[i]) c.array[3 * i] = c.array[3 * i + 1] = c.array[3 * i + 2] = 0.93;
-      else colour(dist[i] * 1e-4, c.array, 3 * i);
-    }
-    c.needsUpdate = true;
-    render.farOnly = farOnly;
-  }
   renderer.render(scene, camera);
 }
-for (const id of ['show-scan', 'show-model', 'far-only']) document.getElementById(id).addEventListener('change', render);
+for (const id of ['colour-by', 'far-only']) {
+  document.getElementById(id).addEventListener('change', () => { recolour(); render(); });
+}
+for (const id of ['show-scan', 'show-model']) document.getElementById(id).addEventListener('change', render);
 // Each station's viewpoint (where the scanner stood, looking at the model),
 // and the overview.
 function lookFrom(position) {
@@ -253,7 +267,20 @@ window.addEventListener('resize', () => {
   camera.aspect = view.clientWidth / view.clientHeight; camera.updateProjectionMatrix();
   renderer.setSize(view.clientWidth, view.clientHeight); render();
 });
+recolour();
 render();
+
+// The edge map: what Sec. 4 found, or why there is none.
+(function edgeMap() {
+  const m = data.edge_map, option = document.querySelector('#colour-by option[value=edges]');
+  const text = m.available
+      ? m.edge_points + ' of ' + m.points + ' points in ' + m.regions + ' valid edge regions (' +
+        m.candidates + ' candidates; Eq. 6 weight ' + m.w_high + ' when the fit uses edge weights)'
+      : 'no edge map: ' + m.why;
+  document.getElementById('edgeinfo').textContent = text;
+  document.getElementById('edge-legend').textContent = 'red: points in valid edge regions. ' + text;
+  if (!m.available) option.disabled = true;
+})();
 
 // Legend.
 (function legend() {
@@ -293,14 +320,19 @@ std::string ReportPage(const std::string& title, const std::string& three_js,
   <label><input type="checkbox" id="show-model" checked> fitted model</label><br>
   <label><input type="checkbox" id="show-scan" checked> scan</label><br>
   <label><input type="checkbox" id="far-only"> only points far from the model</label><br>
+  <label>colour by <select id="colour-by"><option value="distance">distance to the model</option>
+   <option value="edges">edge map (Sec. 4, Eq. 6)</option></select></label><br>
   <span id="viewpoints">view from </span>
  </div>
- <div id="legend">distance to the fitted model: 0 <canvas id="colourbar" width="160" height="10"></canvas>
-  <span id="scalemax"></span> and more<br><span id="farlabel"></span><br><span id="pointinfo"></span></div>
+ <div id="legend"><div id="distance-legend">distance to the fitted model: 0
+  <canvas id="colourbar" width="160" height="10"></canvas> <span id="scalemax"></span> and more<br>
+  <span id="farlabel"></span></div><div id="edge-legend" style="display: none"></div>
+  <span id="pointinfo"></span></div>
 </div>
 <div id="side">
  <h2>Joints</h2><table id="joints"></table>
  <h2>Links</h2><table id="links"></table>
+ <h2>Edge map</h2><p id="edgeinfo"></p>
  <h2>Residuals per link (<span id="histrange"></span>)</h2><div class="histograms" id="histograms"></div>
  <h2>What each station saw</h2><div id="stations"></div>
  <h2>Stage timings</h2><table id="timings"></table>

@@ -1,7 +1,7 @@
 // edgefit fit --out_report and edgefit report, tested as a person would use
 // them: the report opens offline in headless Chromium (Debian's chromium,
 // software WebGL) without a script error, draws the scan and the model, and
-// shows the joint table (that part skipped when chromium is not installed).
+// shows the joint table and the edge map (that part skipped when chromium is not installed).
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -53,7 +53,8 @@ TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   EXPECT_GT(std::stol(pixels), 20000) << "the 3D view is nearly blank";
   // The tables the script built from the result.
   for (const char* text : {"joint_1", "joint_2", "piston_joint", "fit ok", "link_2",
-                           "src=\"data:image/png;base64,", "station 2"}) {
+                           "src=\"data:image/png;base64,", "station 2",
+                           "valid edge regions (", "edge map (Sec. 4, Eq. 6)"}) {
     EXPECT_NE(page.find(text), std::string::npos) << text;
   }
 }

@@ -4,9 +4,10 @@
 // coloured by its distance to the fitted model (points far from it, such as
 // accessories, jackets and the surroundings, stand out in grey); the fitted
 // meshes, which can be toggled, seen from anywhere or from each station;
-// what each station saw as an image (also PNG files); the verdict, and per joint its value,
-// verdict, standard deviation and, with a truth, its error; the stage
-// timings and the options. The 3D view is WebGL through three.js, embedded
+// what each station saw as an image (also PNG files); the edge map (paper
+// Sec. 4: the points in valid edge regions, which Eq. 6 weights w_high); the
+// verdict, and per joint its value, verdict, standard deviation and, with a
+// truth, its error; the stage timings and the options. The 3D view is WebGL through three.js, embedded
 // from Debian's libjs-three (read when the report is written).
 #ifndef EDGEFIT_REPORT_FIT_REPORT_H_
 #define EDGEFIT_REPORT_FIT_REPORT_H_
@@ -20,6 +21,7 @@
 
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
+#include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/kinematic_model.h"
 #include "edgefit/scan/organized_scan.h"
 
@@ -43,6 +45,11 @@ struct FitReportOptions {
   // PNG files beside the report (StationImagePath).
   int max_image_size = 1600;
   bool station_pngs = true;
+  // The edge map: Sec. 4 run on the scans with these options (the fit's),
+  // so the view can colour the points Eq. (6) weights w_high. Scans without
+  // a lattice have none (the page says so).
+  bool edge_map = true;
+  EdgeDetectionOptions edges;
   // Where Debian's libjs-three installs three.min.js and
   // examples/js/controls/OrbitControls.js.
   std::string three_js_dir = "/usr/share/javascript/three";
