@@ -227,8 +227,10 @@ int RunBatch(const Command& command) {
   int failed = 0, not_ok = 0;
   std::vector<std::string> failures;
   const auto start = std::chrono::steady_clock::now();
+  ProgressCounter counter(mine.size());
   for (size_t k = 0; k < mine.size(); ++k) {
     const Job& job = *mine[k];
+    Progress("batch: job " + counter.Next() + ": " + job.name);
     const auto job_start = std::chrono::steady_clock::now();
     std::string error;
     const int code = RunChild(job.args, &error);

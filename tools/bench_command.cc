@@ -223,32 +223,61 @@ int RunBench(const Command& command) {
                 fits.push_back({weighting, w_high, lambda, loss, step, search, refine == "on"});
               }
 
-  std::vector<Run> runs;
-  for (const std::string& asset : assets) {
-    const bool robot = asset == "robot";
+  // The assets and, per repeat, their cases: first, so that the progress
+  // can say how far the bench is.
+  struct Asset {
+    std::string name;
+    KinematicModel model;
+    AssetKind kind = AssetKind::kArticulated;
+    std::vector<std::vector<BenchCase>> cases;  // per repeat, after --only
+  };
+  std::vector<Asset> loaded(assets.size());
+  size_t total_fits = 0;
+  for (size_t a = 0; a < assets.size(); ++a) {
+    Asset& asset = loaded[a];
+    asset.name = assets[a];
+    const bool robot = asset.name == "robot";
     std::vector<AttachSpec> specs;
     if (robot)
       EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseAttachSpecList(FLAGS_robot_attach, &specs));
-    KinematicModel model;
     EDGEFIT_RETURN_IF_ERROR_EXIT(
         command, LoadModelWithAttachments(robot ? FLAGS_robot_urdf : FLAGS_conveyor_urdf, specs,
-                                          ModelLoadOptions(), &model));
-    AssetKind kind = AssetKind::kArticulated;
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseAssetKind("auto", model, &kind));
+                                          ModelLoadOptions(), &asset.model));
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseAssetKind("auto", asset.model, &asset.kind));
     for (int repeat = 0; repeat < FLAGS_repeats; ++repeat) {
       const uint64_t seed = FLAGS_seed + static_cast<uint64_t>(repeat);
       std::vector<BenchCase> cases;
       const std::string& postures = robot ? FLAGS_robot_postures : FLAGS_conveyor_postures;
       if (!postures.empty()) {
         EDGEFIT_RETURN_IF_ERROR_EXIT(
-            command, NamedPostureCases(model, postures, seed, FLAGS_base_range_m, &cases));
+            command, NamedPostureCases(asset.model, postures, seed, FLAGS_base_range_m, &cases));
       }
       EDGEFIT_RETURN_IF_ERROR_EXIT(
-          command, RandomPostureCases(model, FLAGS_random_postures, seed, FLAGS_base_range_m,
+          command, RandomPostureCases(asset.model, FLAGS_random_postures, seed, FLAGS_base_range_m,
                                       &cases, [](const std::string& line) { Progress(line); }));
-      if (cases.empty()) return BadInput(command, asset + ": no postures (named or random)");
-      for (const BenchCase& c : cases) {
-        if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
+      if (cases.empty()) return BadInput(command, asset.name + ": no postures (named or random)");
+      if (!only.empty()) {
+        cases.erase(std::remove_if(cases.begin(), cases.end(),
+                                   [&](const BenchCase& c) {
+                                     return std::find(only.begin(), only.end(), c.name) ==
+                                            only.end();
+                                   }),
+                    cases.end());
+      }
+      total_fits += cases.size();
+      asset.cases.push_back(std::move(cases));
+    }
+  }
+  total_fits *= sceneries.size() * sensors.size() * noises.size() * spacings.size() *
+                scanner_counts.size() * fits.size();
+
+  std::vector<Run> runs;
+  ProgressCounter counter(total_fits);
+  for (const Asset& asset : loaded) {
+    const KinematicModel& model = asset.model;
+    for (int repeat = 0; repeat < FLAGS_repeats; ++repeat) {
+      const uint64_t seed = FLAGS_seed + static_cast<uint64_t>(repeat);
+      for (const BenchCase& c : asset.cases[static_cast<size_t>(repeat)]) {
         for (const std::string& scenery : sceneries)
           for (const std::string& sensor : sensors)
             for (const double noise : noises)
@@ -263,8 +292,8 @@ int RunBench(const Command& command) {
                 scan_options.scanners = scan_setting.scanners;
                 scan_options.scan.spacing = 1e-3 * spacing;
                 scan_options.scan.noise_sigma = 1e-3 * noise;
-                const std::string scene = asset + " " + c.name + ", " + scenery + " accessories, " +
-                                          sensor + " sensor" +
+                const std::string scene = asset.name + " " + c.name + ", " + scenery +
+                                          " accessories, " + sensor + " sensor" +
                                           (axes.repeat ? ", seed " + std::to_string(seed) : "");
                 Progress("bench: scanning " + scene + " (edgefit scan " + ScanFlagsFor(model, c) +
                          (scan_options.accessories ? " --accessories" : "") +
@@ -277,10 +306,12 @@ int RunBench(const Command& command) {
                 EDGEFIT_RETURN_IF_ERROR_EXIT(
                     command, ScanBenchCase(model, c, scan_options, &scan, &T_survey_world));
                 for (const FitSetting& fit : fits) {
-                  Run run{asset, c.name, scan_setting, fit, Label(axes, scan_setting, fit), {}};
-                  Progress("bench: " + scene + ", " + fit.weighting + " weights, " + run.label);
+                  Run run{asset.name, c.name, scan_setting, fit, Label(axes, scan_setting, fit),
+                          {}};
+                  Progress("bench: fit " + counter.Next() + ": " + scene + ", " + fit.weighting +
+                           " weights, " + run.label);
                   FitOptions options;
-                  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFor(kind, fit, seed, &options));
+                  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFor(asset.kind, fit, seed, &options));
                   EDGEFIT_RETURN_IF_ERROR_EXIT(
                       command,
                       FitBenchCase(model, c, scan.scans, T_survey_world, options, &run.result,
@@ -291,6 +322,7 @@ int RunBench(const Command& command) {
       }
     }
   }
+  if (runs.empty()) return BadInput(command, "--only: no posture of that name");
 
   nlohmann::json runs_json = nlohmann::json::array();
   for (const Run& run : runs) runs_json.push_back(RunJson(run));

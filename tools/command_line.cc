@@ -3,6 +3,8 @@
 #include <gflags/gflags.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -116,11 +118,52 @@ void PrintOverview() {
                "1 internal failure.\n";
 }
 
+namespace {
+
+const auto kStart = std::chrono::steady_clock::now();
+
+double SecondsSinceStart() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - kStart).count();
+}
+
+// "42 s", "3:05", "1:02:09".
+std::string Duration(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  char text[32];
+  if (s < 60) {
+    std::snprintf(text, sizeof(text), "%ld s", s);
+  } else if (s < 3600) {
+    std::snprintf(text, sizeof(text), "%ld:%02ld", s / 60, s % 60);
+  } else {
+    std::snprintf(text, sizeof(text), "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  }
+  return text;
+}
+
+}  // namespace
+
 void Progress(const std::string& message) {
   static const bool enabled =
       !FLAGS_quiet && (FLAGS_progress == "always" ||
                        (FLAGS_progress == "auto" && ::isatty(STDERR_FILENO) != 0));
-  if (enabled) std::cerr << message << std::endl;
+  if (!enabled) return;
+  char stamp[32];
+  std::snprintf(stamp, sizeof(stamp), "[%7.1f s] ", SecondsSinceStart());
+  std::cerr << stamp << message << std::endl;
+}
+
+ProgressCounter::ProgressCounter(size_t total)
+    : total_(total), start_(std::chrono::steady_clock::now()) {}
+
+std::string ProgressCounter::Next() {
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  std::string text = std::to_string(++started_) + "/" + std::to_string(total_);
+  if (started_ > 1 && started_ <= total_) {
+    const double per_item = elapsed / static_cast<double>(started_ - 1);
+    text += ", about " + Duration(per_item * static_cast<double>(total_ - started_ + 1)) + " left";
+  }
+  return text;
 }
 
 std::vector<std::string> SplitList(const std::string& list) {

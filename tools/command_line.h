@@ -4,6 +4,8 @@
 #ifndef EDGEFIT_TOOLS_COMMAND_LINE_H_
 #define EDGEFIT_TOOLS_COMMAND_LINE_H_
 
+#include <chrono>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -42,8 +44,24 @@ void PrintCommandHelp(const Command& command);
 void PrintOverview();
 
 // A progress line on stderr for long steps, only when stderr is a terminal
-// (so scripts and logs get exactly one line on failure).
+// (so scripts and logs get exactly one line on failure) or --progress=always,
+// never with --quiet; each line starts with the seconds since the command
+// started ("[   12.3 s] ").
 void Progress(const std::string& message);
+
+// How far a command is through `total` items of similar cost (the bench's
+// fits, the batch's jobs, the cell's assets): Next(), as an item starts,
+// gives "3/16, about 5:10 left" (the time left from the mean time of the
+// items done; none before the first is done).
+class ProgressCounter {
+ public:
+  explicit ProgressCounter(size_t total);
+  std::string Next();
+
+ private:
+  size_t total_ = 0, started_ = 0;
+  std::chrono::steady_clock::time_point start_;
+};
 
 // "edgefit <cmd>" and the flags given (those not at their defaults), to
 // say in a report what made it.
