@@ -14,6 +14,9 @@
 // --lambdas, --losses, --sweep_steps_deg, --searches, --refine_chains.
 // With any axis of more than one value, a summary per setting follows:
 // mean, 95th percentile and largest error, failure rate and time.
+// --shard=i/N runs the k-th scan (with all its fits) when k mod N = i: a
+// Slurm array's tasks share a bench, `edgefit report --bench=F0,F1,...`
+// gathers their --out_json into one report.
 #include <gflags/gflags.h>
 #include <omp.h>
 
@@ -82,7 +85,6 @@ DEFINE_int32(repeats, 1,
              "fit seeds).");
 DEFINE_bool(fit_progress, false,
             "Bench: pass each fit's progress lines on (stderr, as edgefit fit prints them).");
-DEFINE_string(out_csv, "", "Bench: optional CSV, one line per fitted joint.");
 
 namespace edgefit::tools {
 namespace {
@@ -166,6 +168,8 @@ int RunBench(const Command& command) {
     if (r != "on" && r != "off") return BadInput(command, "--refine_chains: off, on");
   }
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitFlags());
+  int shard = 0, shards = 1;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseShard(FLAGS_shard, &shard, &shards));
   EDGEFIT_RETURN_IF_ERROR_EXIT(command,
                                CheckOutputPaths({FLAGS_out_csv, FLAGS_out_json, FLAGS_out_report}));
   JointParameterization parameterization = JointParameterization::kJointSpace;
@@ -232,7 +236,7 @@ int RunBench(const Command& command) {
     std::vector<std::vector<BenchCase>> cases;  // per repeat, after --only
   };
   std::vector<Asset> loaded(assets.size());
-  size_t total_fits = 0;
+  size_t cases_total = 0;
   for (size_t a = 0; a < assets.size(); ++a) {
     Asset& asset = loaded[a];
     asset.name = assets[a];
@@ -264,15 +268,20 @@ int RunBench(const Command& command) {
                                    }),
                     cases.end());
       }
-      total_fits += cases.size();
+      cases_total += cases.size();
       asset.cases.push_back(std::move(cases));
     }
   }
-  total_fits *= sceneries.size() * sensors.size() * noises.size() * spacings.size() *
-                scanner_counts.size() * fits.size();
+  // The scans (each with all its fits) this shard runs: the k-th with k mod N = i.
+  const size_t scans_total = cases_total * sceneries.size() * sensors.size() * noises.size() *
+                             spacings.size() * scanner_counts.size();
+  const size_t n = static_cast<size_t>(shards), i = static_cast<size_t>(shard);
+  const size_t scans_mine = scans_total / n + (i < scans_total % n ? 1 : 0);
+  if (scans_total == 0) return BadInput(command, "--only: no posture of that name");
 
   std::vector<Run> runs;
-  ProgressCounter counter(total_fits);
+  ProgressCounter counter(scans_mine * fits.size());
+  size_t scan_index = 0;
   for (const Asset& asset : loaded) {
     const KinematicModel& model = asset.model;
     for (int repeat = 0; repeat < FLAGS_repeats; ++repeat) {
@@ -283,6 +292,7 @@ int RunBench(const Command& command) {
             for (const double noise : noises)
               for (const double spacing : spacings)
               for (const double scanners : scanner_counts) {
+                if (scan_index++ % n != i) continue;
                 const ScanSetting scan_setting{scenery, noise, spacing,
                                                static_cast<int>(scanners), repeat, sensor};
                 AssetScanOptions scan_options;
@@ -322,7 +332,13 @@ int RunBench(const Command& command) {
       }
     }
   }
-  if (runs.empty()) return BadInput(command, "--only: no posture of that name");
+  if (runs.empty()) {  // more shards than scans
+    std::printf("bench: shard %d/%d has none of the %zu scans\n", shard, shards, scans_total);
+    if (!FLAGS_out_json.empty()) {
+      EDGEFIT_RETURN_IF_ERROR_EXIT(command, WriteStringAtomically(FLAGS_out_json, "[]\n"));
+    }
+    return kExitOk;
+  }
 
   nlohmann::json runs_json = nlohmann::json::array();
   for (const Run& run : runs) runs_json.push_back(RunJson(run));
@@ -373,7 +389,7 @@ Command BenchCommand() {
       "                [--losses=trivial,huber,cauchy,soft_l1,tukey] [--sweep_steps_deg=0.5,1,2]\n"
       "                [--searches=lattice,kdtree] [--refine_chains=off,on]\n"
       "                [--noises_mm=0,1,2,3] [--spacings_mm=1,1.7,3] [--scanner_counts=1,2,3,4]\n"
-      "                [--repeats=N]\n"
+      "                [--repeats=N] [--shard=i/N]\n"
       "                [--sensors=ideal,realistic,stations+as_built] [--jackets]\n"
       "Run from the source folder (the defaults name assets/...). "
       "--out_report writes the tables and the ablation plots (error against each axis) as one "
@@ -400,6 +416,7 @@ Command BenchCommand() {
        "noises_mm",
        "spacings_mm",
        "out_report",
+       "shard",
        "scanner_counts",
        "repeats",
        "parameterization",

@@ -198,6 +198,24 @@ std::string CommandText(const Command& command) {
   return text;
 }
 
+Status ParseShard(const std::string& text, int* index, int* count) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  const long i = std::strtol(begin, &end, 10);
+  const bool slash = end != begin && *end == '/';
+  const char* rest = slash ? end + 1 : end;
+  const long n = slash ? std::strtol(rest, &end, 10) : 0;
+  if (!slash || end == rest || *end != '\0') {
+    return Status::Error("--shard must be i/N (two integers), not '" + text + "'");
+  }
+  if (n < 1 || i < 0 || i >= n || n > 1000000) {
+    return Status::Error("--shard=" + text + ": need N >= 1 and 0 <= i < N");
+  }
+  *index = static_cast<int>(i);
+  *count = static_cast<int>(n);
+  return Status::Ok();
+}
+
 Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x, double* y,
                      double* yaw) {
   const std::vector<std::string> parts = SplitList(text);

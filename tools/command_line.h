@@ -70,6 +70,9 @@ std::string CommandText(const Command& command);
 // Splits "a,b,,c" into {"a", "b", "c"}.
 std::vector<std::string> SplitList(const std::string& list);
 
+// "i/N" (--shard): share i of N, 0 <= i < N.
+Status ParseShard(const std::string& text, int* index, int* count);
+
 // Parses a level pose on the floor, "x,y,yaw_deg" (metres, degrees), into x,
 // y [m] and yaw [rad]; errors name `flag`.
 Status ParseXyYawDeg(const std::string& flag, const std::string& text, double* x, double* y,

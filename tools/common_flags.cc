@@ -27,6 +27,12 @@ DEFINE_string(out_ply, "",
               "Optional PLY output. edges: the valid points coloured by weight (red: w_high, "
               "orange: candidates dropped by region growing, grey: others); fit: the fitted "
               "model's meshes in the world frame.");
+DEFINE_string(shard, "0/1",
+              "i/N: this process's share. batch: the k-th of the rows (all, or --rows) with k "
+              "mod N = i; bench: the k-th of its scans (each with its fits) with k mod N = i.");
+DEFINE_string(out_csv, "",
+              "Optional CSV. bench: one line per fitted joint; batch --merge: one line per job "
+              "and joint.");
 DEFINE_string(out_json, "",
               "Output JSON. edges: a summary (points, edge_points, timing_s, options); bench: "
               "every run.");

@@ -18,6 +18,8 @@ DECLARE_string(labels);
 DECLARE_string(out);
 DECLARE_string(truth);
 DECLARE_string(out_ply);
+DECLARE_string(shard);
+DECLARE_string(out_csv);
 DECLARE_string(out_json);
 DECLARE_string(out_report);
 DECLARE_int32(scanners);

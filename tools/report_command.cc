@@ -19,7 +19,9 @@
 #include "edgefit/report/fit_report.h"
 
 DEFINE_string(result, "", "report: result.json of edgefit fit.");
-DEFINE_string(bench, "", "report: the runs of edgefit bench (its --out_json).");
+DEFINE_string(bench, "",
+              "report: the runs of edgefit bench (its --out_json); several files (the shards "
+              "of one bench) as a comma list.");
 
 namespace edgefit::tools {
 namespace {
@@ -85,18 +87,28 @@ Status ReadFit(const json& result, const std::string& path, KinematicModel* mode
   return Status::Ok();
 }
 
-// The bench's tables and plots from its saved runs.
+// The bench's tables and plots from its saved runs: one file, or the
+// shards' files of a bench run as a Slurm array, their runs joined.
 int RunBench(const Command& command) {
-  std::string text;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(FLAGS_bench, &text));
-  const json runs = json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (runs.is_discarded()) return BadInput(command, FLAGS_bench + ": not JSON");
-  const Status valid = CheckBenchRuns(runs);
-  if (!valid.ok()) return BadInput(command, FLAGS_bench + ": " + valid.message());
+  json runs = json::array();
+  for (const std::string& path : SplitList(FLAGS_bench)) {
+    std::string text;
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(path, &text));
+    const json part = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (!part.is_array()) {
+      return BadInput(command, path + ": not the runs of edgefit bench --out_json (a JSON array)");
+    }
+    if (part.empty()) continue;  // a shard without scans
+    const Status valid = CheckBenchRuns(part);
+    if (!valid.ok()) return BadInput(command, path + ": " + valid.message());
+    runs.insert(runs.end(), part.begin(), part.end());
+  }
+  if (runs.empty()) return BadInput(command, "--bench: no runs in " + FLAGS_bench);
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, WriteTablesReport(BenchReport(runs, "edgefit bench, runs read from " + FLAGS_bench),
                                  FLAGS_out));
-  std::printf("report: %s\n", FLAGS_out.c_str());
+  for (const Table& table : BenchTables(runs)) std::printf("%s", MarkdownTable(table).c_str());
+  std::printf("\nreport: %s\n", FLAGS_out.c_str());
   return 0;
 }
 
@@ -151,7 +163,7 @@ Command ReportCommand() {
           "every joint's verdict), or of a bench from its runs (tables, ablation plots)",
           "Usage:\n"
           "  edgefit report --result=result.json --out=report.html\n"
-          "  edgefit report --bench=runs.json --out=bench.html\n"
+          "  edgefit report --bench=runs.json[,runs_1.json,...] --out=bench.html\n"
           "Example:\n"
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
           "  edgefit report --result=result.json --out=report.html",

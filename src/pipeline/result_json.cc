@@ -136,11 +136,14 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
                    const FitResult& fit) {
   const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
   const Eigen::Vector3d xyz = fit.T_world_base.translation();
-  json joints = json::object();
+  json joints = json::object(), joint_types = json::object();
   json joint_std = json::object();  // lower bounds (chain_refinement.h), null: not determined
   const ChainRefinementSummary& chain = fit.chain_refinement;
   for (size_t j = 0; j < model.joints().size(); ++j) {
-    if (model.joints()[j].IsMoving()) joints[model.joints()[j].name] = fit.q[j];
+    if (model.joints()[j].IsMoving()) {
+      joints[model.joints()[j].name] = fit.q[j];
+      joint_types[model.joints()[j].name] = JointTypeName(model.joints()[j].type);
+    }
     if (model.joints()[j].IsIndependent()) {  // none when the fit stopped before the chain
       joint_std[model.joints()[j].name] =
           j < chain.joint_std.size() ? NumberOrNull(chain.joint_std[j]) : json(nullptr);
@@ -182,6 +185,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"rpy", {rpy.x(), rpy.y(), rpy.z()}},
             {"T_world_base", PoseRows(fit.T_world_base)}}},
           {"joints", joints},
+          {"joint_types", joint_types},
           {"joint_std", joint_std},
           {"joint_status", JointStatusJson(model, fit, joint_std)},
           {"base_std", base_std},

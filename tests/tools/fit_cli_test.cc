@@ -34,7 +34,10 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   // Every non-fixed joint, dependent ones included.
   for (const char* joint : {"joint_1", "joint_2", "cylinder_joint", "piston_joint", "rod_joint"}) {
     EXPECT_TRUE(result["joints"].contains(joint)) << joint;
+    EXPECT_TRUE(result["joint_types"].contains(joint)) << joint;
   }
+  EXPECT_EQ(result["joint_types"]["joint_1"], "revolute");
+  EXPECT_EQ(result["joint_types"]["piston_joint"], "prismatic");
   for (const char* stage :
        {"load", "edges", "base_rough", "base_precise", "chain", "refine", "alternatives",
         "total"}) {
