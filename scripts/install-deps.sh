@@ -4,6 +4,8 @@
 #   ./scripts/install-deps.sh            build + test dependencies
 #   EDGEFIT_WITH_CLOUDCOMPARE=0 ...      skip CloudCompare (used by one interop test)
 #   EDGEFIT_WITH_BROWSER=0 ...           skip Chromium (the report's page test skips)
+#   EDGEFIT_WITH_SLURM=0 ...             skip Slurm and munge (the Slurm test installs them
+#                                        itself when it may, else skips)
 set -euo pipefail
 
 packages=(
@@ -18,6 +20,11 @@ packages=(
 packages+=(libjs-three)
 if [[ "${EDGEFIT_WITH_BROWSER:-1}" == "1" ]]; then
   packages+=(chromium)
+fi
+# scripts/slurm/ and its test: a one-node cluster of Debian's Slurm (the
+# daemons are started by the test in a folder of its own, never as services).
+if [[ "${EDGEFIT_WITH_SLURM:-1}" == "1" ]]; then
+  packages+=(slurmctld slurmd slurm-client munge)
 fi
 if [[ "${EDGEFIT_WITH_CLOUDCOMPARE:-1}" == "1" ]]; then
   packages+=(cloudcompare xvfb)

@@ -37,6 +37,64 @@ TEST_F(CliTest, BatchRunsEveryJobAndReportsTheFailedOne) {
   EXPECT_TRUE(fs::exists(Path("arm_result.json")));
   EXPECT_NE(Slurp(Path("arm_result.json")).find("\"errors\""), std::string::npos);  // --truth
   EXPECT_FALSE(fs::exists(Path("lost_result.json")));
+  // The failed job leaves its record beside its output, for --merge.
+  EXPECT_NE(Slurp(Path("lost_result.json.failed")).find("exit 2: "), std::string::npos);
+
+  // --merge: every row once, the failed one with its error, the rows to redo.
+  const RunResult merged = Run("batch --manifest=" + manifest + " --merge --out_csv=" +
+                               Path("merged.csv") + " --out_report=" + Path("merged.html"));
+  EXPECT_EQ(merged.exit_code, 1) << merged.out << merged.err;
+  EXPECT_NE(merged.out.find("| 0 | arm | ok |"), std::string::npos) << merged.out;
+  EXPECT_NE(merged.out.find("| 1 | lost | FAILED |"), std::string::npos) << merged.out;
+  EXPECT_NE(merged.out.find("merge: 2 rows: 1 done (0 not ok), 1 failed, 0 missing"),
+            std::string::npos)
+      << merged.out;
+  EXPECT_NE(merged.out.find("resubmit: edgefit batch --manifest=" + manifest + " --rows=1"),
+            std::string::npos)
+      << merged.out;
+  EXPECT_NE(merged.out.find("Errors against the truth"), std::string::npos) << merged.out;
+  const std::string csv = Slurp(Path("merged.csv"));
+  EXPECT_NE(csv.find("0,arm,ok,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",joint_1,revolute,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("1,lost,FAILED,"), std::string::npos) << csv;
+  EXPECT_NE(Slurp(Path("merged.html")).find("<td>lost</td><td>FAILED</td>"), std::string::npos);
+
+  // The failed row again, now with its scan: done, and its record gone.
+  fs::copy_file(Path("arm.ptx"), Path("none.ptx"));
+  const RunResult again = Run("batch --manifest=" + manifest + " --rows=1");
+  EXPECT_EQ(again.exit_code, 0) << again.out << again.err;
+  EXPECT_NE(again.out.find("[1/1] lost: ok"), std::string::npos) << again.out;
+  EXPECT_FALSE(fs::exists(Path("lost_result.json.failed")));
+  const RunResult complete = Run("batch --manifest=" + manifest + " --merge");
+  EXPECT_EQ(complete.exit_code, 0) << complete.out;
+  EXPECT_NE(complete.out.find("merge: 2 rows: 2 done"), std::string::npos) << complete.out;
+  EXPECT_EQ(complete.out.find("resubmit"), std::string::npos) << complete.out;
+}
+
+TEST_F(CliTest, BatchRowsAndMergeFlags) {
+  std::string rows = "name,urdf,scan,out\n";
+  for (int k = 0; k < 5; ++k) {
+    rows +=
+        "job" + std::to_string(k) + "," + kModel + ",missing.ptx,r" + std::to_string(k) + ".json\n";
+  }
+  const std::string manifest = Write("jobs.csv", rows);
+  // --rows picks rows (ranges too), then the shards split them.
+  const RunResult r = Run("batch --manifest=" + manifest + " --rows=4,1-2 --shard=1/2");
+  EXPECT_NE(r.out.find("] job1:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("] job2:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("] job4:"), std::string::npos) << r.out;
+  ExpectBadInput("batch --manifest=" + manifest + " --rows=5", "past the manifest's 5 rows");
+  ExpectBadInput("batch --manifest=" + manifest + " --rows=2-a", "--rows: '2-a'");
+  ExpectBadInput("batch --manifest=" + manifest + " --merge --rows=1", "--merge reads every row");
+  ExpectBadInput("batch --manifest=" + manifest + " --out_csv=" + Path("x.csv"), "--merge");
+  // Nothing run: every row missing, all five to resubmit.
+  fs::remove(Path("r1.json.failed"));
+  const RunResult merged = Run("batch --manifest=" + manifest + " --merge");
+  EXPECT_EQ(merged.exit_code, 1);
+  EXPECT_NE(merged.out.find("merge: 5 rows: 0 done (0 not ok), 0 failed, 5 missing"),
+            std::string::npos)
+      << merged.out;
+  EXPECT_NE(merged.out.find("--rows=0-4"), std::string::npos) << merged.out;
 }
 
 TEST_F(CliTest, BatchShardsSplitTheRows) {
