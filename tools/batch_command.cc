@@ -83,7 +83,7 @@ int RunChild(const std::vector<std::string>& args, std::string* error) {
   for (ssize_t n; (n = read(pipe_fds[0], buffer, sizeof(buffer))) > 0;) output.append(buffer, n);
   close(pipe_fds[0]);
   if (spawned != 0) {
-    *error = "cannot start edgefit fit";
+    *error = "cannot start edgefit";
     return kExitInternal;
   }
   int status = 0;

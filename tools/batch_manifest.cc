@@ -52,14 +52,17 @@ Status ReadManifest(const std::string& path, int threads, std::vector<Job>* jobs
     for (std::string& f : fields) f = Trim(f);
     if (column.empty()) {  // the header
       for (size_t k = 0; k < fields.size(); ++k) {
-        static const char* kKnown[] = {"name", "urdf", "attach", "scan", "out", "options"};
+        static const char* kKnown[] = {"name", "urdf", "models", "attach", "scan", "out", "options"};
         if (std::find(std::begin(kKnown), std::end(kKnown), fields[k]) == std::end(kKnown)) {
           return Status::Error(where + "unknown column '" + fields[k] +
-                               "' (name, urdf, attach, scan, out, options)");
+                               "' (name, urdf, models, attach, scan, out, options)");
         }
         column[fields[k]] = k;
       }
-      for (const char* required : {"urdf", "scan", "out"}) {
+      if (column.count("urdf") == 0 && column.count("models") == 0) {
+        return Status::Error(where + "the header lacks the column 'urdf' (or 'models')");
+      }
+      for (const char* required : {"scan", "out"}) {
         if (column.count(required) == 0) {
           return Status::Error(where + "the header lacks the column '" + required + "'");
         }
@@ -76,11 +79,20 @@ Status ReadManifest(const std::string& path, int threads, std::vector<Job>* jobs
     Job job;
     job.row = static_cast<int>(jobs->size());
     job.name = field("name").empty() ? "row " + std::to_string(job.row) : field("name");
-    for (const char* required : {"urdf", "scan", "out"}) {
+    for (const char* required : {"scan", "out"}) {
       if (field(required).empty()) return Status::Error(where + "empty '" + required + "'");
     }
+    if (field("urdf").empty() == field("models").empty()) {
+      return Status::Error(where + "give a 'urdf' (a fit) or a 'models' (a cell), one of them");
+    }
     job.out = resolve(field("out"));
-    job.args = {"fit", "--urdf=" + resolve(field("urdf")), "--out=" + job.out};
+    job.cell = !field("models").empty();
+    job.args = {job.cell ? "cell" : "fit",
+                job.cell ? "--models=" + resolve(field("models")) : "--urdf=" + resolve(field("urdf")),
+                "--out=" + job.out};
+    if (job.cell && !field("attach").empty()) {
+      return Status::Error(where + "a cell's end effectors go in its models file, not 'attach'");
+    }
     std::string scans;
     for (const std::string& scan : Split(field("scan"), ';')) {
       if (!Trim(scan).empty()) scans += (scans.empty() ? "" : ",") + resolve(Trim(scan));
@@ -93,7 +105,7 @@ Status ReadManifest(const std::string& path, int threads, std::vector<Job>* jobs
     if (!attach.empty()) job.args.push_back("--attach=" + attach);
     std::istringstream options(field("options"));
     for (std::string option; options >> option;) {
-      for (const char* owned : {"--urdf", "--scan", "--out=", "--attach"}) {
+      for (const char* owned : {"--urdf", "--models", "--scan", "--out=", "--attach"}) {
         if (option.rfind(owned, 0) == 0) {
           return Status::Error(where + "option '" + option + "' belongs in its own column");
         }
@@ -102,8 +114,8 @@ Status ReadManifest(const std::string& path, int threads, std::vector<Job>* jobs
         return Status::Error(where + "option '" + option + "' is not a --flag");
       }
       // Path-valued flags follow the manifest's folder too.
-      for (const char* path_flag :
-           {"--truth=", "--out_joint_states=", "--out_urdf=", "--out_ply=", "--out_background="}) {
+      for (const char* path_flag : {"--truth=", "--out_joint_states=", "--out_urdf=", "--out_ply=",
+                                    "--out_background=", "--out_dir=", "--out_report="}) {
         const std::string prefix = path_flag;
         if (option.rfind(prefix, 0) == 0) option = prefix + resolve(option.substr(prefix.size()));
       }

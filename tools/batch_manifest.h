@@ -1,4 +1,5 @@
-// The batch's manifest (edgefit batch): a CSV of `edgefit fit` jobs, which
+// The batch's manifest (edgefit batch): a CSV of `edgefit fit` and
+// `edgefit cell` jobs, which
 // rows a process runs (--rows, --shard), and where a failed job leaves its
 // record for --merge.
 #ifndef EDGEFIT_TOOLS_BATCH_MANIFEST_H_
@@ -11,10 +12,13 @@
 
 namespace edgefit::tools {
 
+// A row: `edgefit fit` of one model (column urdf), or `edgefit cell` of
+// every instance of several (column models).
 struct Job {
   int row = 0;  // data row, from 0
   std::string name;
-  std::vector<std::string> args;  // for `edgefit fit`
+  bool cell = false;
+  std::vector<std::string> args;  // for `edgefit fit` or `edgefit cell`
   std::string out;
 };
 

@@ -48,6 +48,31 @@ std::string Text(const json& value, const std::string& fallback = "") {
   return value.is_string() ? value.get<std::string>() : fallback;
 }
 
+// The results in the edgefit fit layout a row's output holds, each with a
+// prefix for its joints: the fit's own (""), or each instance's of a cell
+// ("robot_0/"; an instance written to --out_dir is read from there).
+std::vector<std::pair<std::string, json>> FitResults(const json& output) {
+  std::vector<std::pair<std::string, json>> results;
+  if (Get(output, "quality").is_object()) {
+    results.emplace_back("", output);
+    return results;
+  }
+  const json& instances = Get(output, "instances");
+  if (!instances.is_array()) return results;
+  for (const json& instance : instances) {
+    const json& result = Get(instance, "result");
+    const std::string prefix = Text(Get(instance, "id"), "instance") + "/";
+    if (result.is_object()) {
+      results.emplace_back(prefix, result);
+    } else if (result.is_string()) {
+      std::ifstream in(result.get<std::string>());
+      json read = json::parse(in, nullptr, /*allow_exceptions=*/false);
+      if (read.is_object()) results.emplace_back(prefix, std::move(read));
+    }
+  }
+  return results;
+}
+
 std::string Format(const char* format, double value) {
   char text[48];
   std::snprintf(text, sizeof(text), format, value);
@@ -60,15 +85,36 @@ RowResult ReadRow(const Job& job) {
   if (std::filesystem::exists(job.out)) {
     std::ifstream in(job.out);
     row.result = json::parse(in, nullptr, /*allow_exceptions=*/false);
-    if (!Get(row.result, "quality").is_object()) {
+    const bool fit = Get(row.result, "quality").is_object();
+    const bool cell = Get(row.result, "instances").is_array() && Get(row.result, "ok").is_boolean();
+    if (!fit && !cell) {
       row.state = RowState::kFailed;
-      row.message = "unreadable result: " + job.out + " is not a result.json of edgefit fit";
+      row.message = "unreadable result: " + job.out + " is not the output of edgefit fit or cell";
       return row;
     }
     row.state = RowState::kDone;
-    const json& quality = Get(row.result, "quality");
-    row.ok = Get(quality, "ok").is_boolean() && Get(quality, "ok").get<bool>();
-    row.message = Text(Get(quality, "message"));
+    if (fit) {
+      const json& quality = Get(row.result, "quality");
+      row.ok = Get(quality, "ok").is_boolean() && Get(quality, "ok").get<bool>();
+      row.message = Text(Get(quality, "message"));
+    } else {
+      // A cell: ok when every model's count is met and every instance ok.
+      const json& instances = Get(row.result, "instances");
+      size_t ok = 0;
+      std::string first_not_ok;
+      for (const json& instance : instances) {
+        const bool instance_ok = Get(instance, "ok").is_boolean() && Get(instance, "ok").get<bool>();
+        ok += instance_ok;
+        if (!instance_ok && first_not_ok.empty()) {
+          first_not_ok = Text(Get(instance, "id")) + ": " + Text(Get(instance, "message"));
+        }
+      }
+      const bool counts_met = Get(row.result, "ok").get<bool>();
+      row.ok = counts_met && ok == instances.size();
+      row.message = std::to_string(instances.size()) + " instances, " + std::to_string(ok) +
+                    " ok" + (counts_met ? "" : "; a model's count was not met") +
+                    (first_not_ok.empty() ? "" : "; " + first_not_ok);
+    }
     const json& total = Get(Get(row.result, "timing_s"), "total");
     if (total.is_number()) {
       row.seconds = total.get<double>();
@@ -99,11 +145,13 @@ std::string StateText(const RowResult& row) {
 std::string Verdicts(const RowResult& row) {
   if (row.state != RowState::kDone) return "-";
   std::map<std::string, int> counts;
-  const json& statuses = Get(row.result, "joint_status");
-  if (!statuses.is_object()) return "-";
-  for (const auto& [joint, status] : statuses.items()) {
-    const std::string verdict = Text(Get(status, "verdict"));
-    if (!verdict.empty()) ++counts[verdict];
+  for (const auto& [prefix, result] : FitResults(row.result)) {
+    const json& statuses = Get(result, "joint_status");
+    if (!statuses.is_object()) continue;
+    for (const auto& [joint, status] : statuses.items()) {
+      const std::string verdict = Text(Get(status, "verdict"));
+      if (!verdict.empty()) ++counts[verdict];
+    }
   }
   std::string text;
   for (const auto& [verdict, n] : counts) {
@@ -112,27 +160,41 @@ std::string Verdicts(const RowResult& row) {
   return text.empty() ? "-" : text;
 }
 
-// A done row's joint errors against a truth (--truth): revolute [deg] and
-// prismatic [mm] by the result's joint_types. False when it has none.
-bool JointErrors(const RowResult& row, std::vector<double>* revolute,
-                 std::vector<double>* prismatic) {
-  const json& errors = Get(Get(row.result, "errors"), "joints");
-  if (row.state != RowState::kDone || !errors.is_object()) return false;
-  const json& types = Get(row.result, "joint_types");
-  const json& status = Get(row.result, "joint_status");
-  for (const auto& [joint, error] : errors.items()) {
-    const std::string type = Text(Get(types, joint));
-    const std::string verdict = Text(Get(Get(status, joint), "verdict"));
-    // Dependent joints, unobservable ones (by convention) and results
-    // without joint types are not scored.
-    if (!error.is_number() || type.empty() || verdict.empty() || verdict == "unobservable") continue;
-    if (type == "prismatic") {
-      prismatic->push_back(1e3 * error.get<double>());
-    } else {
-      revolute->push_back(error.get<double>() / kDeg);
+// A done row's errors against a truth (--truth): joints, revolute [deg]
+// and prismatic [mm] by the results' joint_types, bases and tool tips [mm].
+// False when it has none.
+bool TruthErrors(const RowResult& row, std::vector<double>* revolute,
+                 std::vector<double>* prismatic, std::vector<double>* base,
+                 std::vector<double>* tip) {
+  if (row.state != RowState::kDone) return false;
+  bool any = false;
+  for (const auto& [prefix, result] : FitResults(row.result)) {
+    const json& e = Get(result, "errors");
+    const json& errors = Get(e, "joints");
+    if (!errors.is_object()) continue;
+    any = true;
+    const json& types = Get(result, "joint_types");
+    const json& status = Get(result, "joint_status");
+    for (const auto& [joint, error] : errors.items()) {
+      const std::string type = Text(Get(types, joint));
+      const std::string verdict = Text(Get(Get(status, joint), "verdict"));
+      // Dependent joints, unobservable ones (by convention) and results
+      // without joint types are not scored.
+      if (!error.is_number() || type.empty() || verdict.empty() || verdict == "unobservable") {
+        continue;
+      }
+      if (type == "prismatic") {
+        prismatic->push_back(1e3 * error.get<double>());
+      } else {
+        revolute->push_back(error.get<double>() / kDeg);
+      }
     }
+    if (Get(e, "base_translation_m").is_number()) {
+      base->push_back(1e3 * Get(e, "base_translation_m").get<double>());
+    }
+    if (Get(e, "tool_tip_m").is_number()) tip->push_back(1e3 * Get(e, "tool_tip_m").get<double>());
   }
-  return true;
+  return any;
 }
 
 double MaxOf(const std::vector<double>& values) {
@@ -168,23 +230,29 @@ std::string MergedCsv(const std::vector<RowResult>& rows) {
     const std::string head = std::to_string(row.job->row) + "," + CsvField(row.job->name) + "," +
                              StateText(row) + "," +
                              (std::isnan(row.seconds) ? "" : Format("%.3f", row.seconds)) + ",";
-    const json& joints = Get(row.result, "joints");
-    if (row.state != RowState::kDone || !joints.is_object() || joints.empty()) {
-      csv << head << ",,,,,," << CsvField(row.message) << "\n";
-      continue;
-    }
-    const json& types = Get(row.result, "joint_types");
-    const json& status = Get(row.result, "joint_status");
-    const json& errors = Get(Get(row.result, "errors"), "joints");
+    const std::vector<std::pair<std::string, json>> results =
+        row.state == RowState::kDone ? FitResults(row.result)
+                                     : std::vector<std::pair<std::string, json>>();
+    size_t lines = 0;
     auto number = [](const json& v) {
       return v.is_number() ? Format("%.9g", v.get<double>()) : std::string();
     };
-    for (const auto& [joint, value] : joints.items()) {
-      const json& st = Get(status, joint);
-      csv << head << CsvField(joint) << "," << Text(Get(types, joint)) << "," << number(value)
-          << "," << Text(Get(st, "verdict"), "dependent") << "," << number(Get(st, "std")) << ","
-          << number(Get(errors, joint)) << "," << CsvField(row.message) << "\n";
+    for (const auto& [prefix, result] : results) {
+      const json& joints = Get(result, "joints");
+      if (!joints.is_object()) continue;
+      const json& types = Get(result, "joint_types");
+      const json& status = Get(result, "joint_status");
+      const json& errors = Get(Get(result, "errors"), "joints");
+      for (const auto& [joint, value] : joints.items()) {
+        const json& st = Get(status, joint);
+        csv << head << CsvField(prefix + joint) << "," << Text(Get(types, joint)) << ","
+            << number(value) << "," << Text(Get(st, "verdict"), "dependent") << ","
+            << number(Get(st, "std")) << "," << number(Get(errors, joint)) << ","
+            << CsvField(row.message) << "\n";
+        ++lines;
+      }
     }
+    if (lines == 0) csv << head << ",,,,,," << CsvField(row.message) << "\n";
   }
   return csv.str();
 }
@@ -198,8 +266,8 @@ int MergeBatch(const Command& command, const std::string& manifest, const std::v
 
   bool any_errors = false;
   for (const RowResult& row : rows) {
-    std::vector<double> r, p;
-    any_errors = any_errors || JointErrors(row, &r, &p);
+    std::vector<double> r, p, b, t;
+    any_errors = any_errors || TruthErrors(row, &r, &p, &b, &t);
   }
   Table table;
   table.heading = "Jobs";
@@ -218,18 +286,11 @@ int MergeBatch(const Command& command, const std::string& manifest, const std::v
                                       Verdicts(row)};
     if (any_errors) {
       std::vector<double> r, p;
-      const bool has = JointErrors(row, &r, &p);
-      cells.push_back(has && !r.empty() ? Format("%.4f", MaxOf(r)) : "-");
-      cells.push_back(has && !p.empty() ? Format("%.3f", MaxOf(p)) : "-");
-      if (has) {
-        revolute.insert(revolute.end(), r.begin(), r.end());
-        prismatic.insert(prismatic.end(), p.begin(), p.end());
-        const json& e = Get(row.result, "errors");
-        if (Get(e, "base_translation_m").is_number()) {
-          base.push_back(1e3 * Get(e, "base_translation_m").get<double>());
-        }
-        if (Get(e, "tool_tip_m").is_number()) tip.push_back(1e3 * Get(e, "tool_tip_m").get<double>());
-      }
+      TruthErrors(row, &r, &p, &base, &tip);
+      cells.push_back(!r.empty() ? Format("%.4f", MaxOf(r)) : "-");
+      cells.push_back(!p.empty() ? Format("%.3f", MaxOf(p)) : "-");
+      revolute.insert(revolute.end(), r.begin(), r.end());
+      prismatic.insert(prismatic.end(), p.begin(), p.end());
     }
     cells.push_back(row.message.empty() ? "-" : row.message);
     cells.push_back(row.job->out);

@@ -130,3 +130,48 @@ TEST_F(CliTest, BatchBadManifest) {
 }
 
 }  // namespace
+
+namespace {
+
+// A row with a cell's models runs edgefit cell; --merge reads its instances
+// (each result inline, or from --out_dir) and their errors against the truth.
+TEST_F(CliTest, BatchRunsACellRowAndMergesItsInstances) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "whole cell fits: release suite only";
+#endif
+  const std::string scene = Write(
+      "scene.json", "{\"assets\": [\n {\"name\": \"a\", \"urdf\": \"" + kModel +
+                        "\", \"joints\": \"joint_1=20deg,joint_2=-0.3\", \"base\": [-1.0, 0, 0]},\n"
+                        " {\"name\": \"b\", \"urdf\": \"" + kModel +
+                        "\", \"joints\": \"joint_1=-30deg,joint_2=0.2\", \"base\": [1.0, 0.3, 90]}]}\n");
+  ASSERT_EQ(Run("scan --scene=" + scene + " --scanners=3 --spacing_mm=6 --seed=3 --out=" +
+                Path("cell.e57") + " --truth=" + Path("truth.json"))
+                .exit_code,
+            0);
+  Write("models.json",
+        "{\"models\": [{\"name\": \"arm\", \"urdf\": \"" + kModel + "\", \"count\": 2}]}\n");
+  const std::string manifest =
+      Write("jobs.csv",
+            "name,models,scan,out,options\n"
+            "cell_inline,models.json,cell.e57,cell.json,--truth=truth.json\n"
+            "cell_dir,models.json,cell.e57,cell_dir.json,--truth=truth.json --out_dir=instances\n");
+  fs::create_directories(Path("instances"));
+  const RunResult r = Run("batch --manifest=" + manifest);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const RunResult merged = Run("batch --manifest=" + manifest + " --merge --out_csv=" + Path("m.csv"));
+  EXPECT_EQ(merged.exit_code, 0) << merged.out;
+  for (const char* row : {"| 0 | cell_inline | ok |", "| 1 | cell_dir | ok |"}) {
+    EXPECT_NE(merged.out.find(row), std::string::npos) << merged.out;
+  }
+  EXPECT_NE(merged.out.find("2 instances, 2 ok"), std::string::npos) << merged.out;
+  // Both arms' joints, from each row: 2 rows x 2 instances x 2 independent joints.
+  EXPECT_NE(merged.out.find("| 8 | "), std::string::npos) << merged.out;
+  const std::string csv = Slurp(Path("m.csv"));
+  EXPECT_NE(csv.find(",arm_1/joint_1,revolute,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",arm_2/joint_2,revolute,"), std::string::npos) << csv;
+  ExpectBadInput("batch --manifest=" + Write("both.csv", "name,urdf,models,scan,out\n"
+                                                          "x," + kModel + ",models.json,c.e57,o.json\n"),
+                 "give a 'urdf' (a fit) or a 'models' (a cell), one of them");
+}
+
+}  // namespace
