@@ -14,6 +14,7 @@
 #include "common_flags.h"
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/core/format.h"
 #include "edgefit/report/tables_report.h"
 
 namespace edgefit::tools {
@@ -73,11 +74,6 @@ std::vector<std::pair<std::string, json>> FitResults(const json& output) {
   return results;
 }
 
-std::string Format(const char* format, double value) {
-  char text[48];
-  std::snprintf(text, sizeof(text), format, value);
-  return text;
-}
 
 RowResult ReadRow(const Job& job) {
   RowResult row;
@@ -229,13 +225,13 @@ std::string MergedCsv(const std::vector<RowResult>& rows) {
   for (const RowResult& row : rows) {
     const std::string head = std::to_string(row.job->row) + "," + CsvField(row.job->name) + "," +
                              StateText(row) + "," +
-                             (std::isnan(row.seconds) ? "" : Format("%.3f", row.seconds)) + ",";
+                             (std::isnan(row.seconds) ? "" : FormatNumber("%.3f", row.seconds)) + ",";
     const std::vector<std::pair<std::string, json>> results =
         row.state == RowState::kDone ? FitResults(row.result)
                                      : std::vector<std::pair<std::string, json>>();
     size_t lines = 0;
     auto number = [](const json& v) {
-      return v.is_number() ? Format("%.9g", v.get<double>()) : std::string();
+      return v.is_number() ? FormatNumber("%.9g", v.get<double>()) : std::string();
     };
     for (const auto& [prefix, result] : results) {
       const json& joints = Get(result, "joints");
@@ -282,13 +278,13 @@ int MergeBatch(const Command& command, const std::string& manifest, const std::v
   redo_table.header = {"row", "name", "status", "why"};
   for (const RowResult& row : rows) {
     std::vector<std::string> cells = {std::to_string(row.job->row), row.job->name, StateText(row),
-                                      std::isnan(row.seconds) ? "-" : Format("%.1f", row.seconds),
+                                      std::isnan(row.seconds) ? "-" : FormatNumber("%.1f", row.seconds),
                                       Verdicts(row)};
     if (any_errors) {
       std::vector<double> r, p;
       TruthErrors(row, &r, &p, &base, &tip);
-      cells.push_back(!r.empty() ? Format("%.4f", MaxOf(r)) : "-");
-      cells.push_back(!p.empty() ? Format("%.3f", MaxOf(p)) : "-");
+      cells.push_back(!r.empty() ? FormatNumber("%.4f", MaxOf(r)) : "-");
+      cells.push_back(!p.empty() ? FormatNumber("%.3f", MaxOf(p)) : "-");
       revolute.insert(revolute.end(), r.begin(), r.end());
       prismatic.insert(prismatic.end(), p.begin(), p.end());
     }
@@ -315,13 +311,13 @@ int MergeBatch(const Command& command, const std::string& manifest, const std::v
     auto stats = [](const std::vector<double>& e, const char* format) {
       if (e.empty()) return std::vector<std::string>{"0", "-", "-", "-"};
       const ErrorStats s = SummarizeErrors(e);
-      return std::vector<std::string>{std::to_string(e.size()), Format(format, s.mean),
-                                      Format(format, s.p95), Format(format, s.max)};
+      return std::vector<std::string>{std::to_string(e.size()), FormatNumber(format, s.mean),
+                                      FormatNumber(format, s.p95), FormatNumber(format, s.max)};
     };
     std::vector<std::string> cells = stats(revolute, "%.4f");
     for (const std::string& c : stats(prismatic, "%.3f")) cells.push_back(c);
-    cells.push_back(base.empty() ? "-" : Format("%.3f", SummarizeErrors(base).mean));
-    cells.push_back(tip.empty() ? "-" : Format("%.3f", SummarizeErrors(tip).mean));
+    cells.push_back(base.empty() ? "-" : FormatNumber("%.3f", SummarizeErrors(base).mean));
+    cells.push_back(tip.empty() ? "-" : FormatNumber("%.3f", SummarizeErrors(tip).mean));
     errors.rows.push_back(cells);
     errors.note = "Joints the fit called unobservable are left out (reported by convention).";
     tables.push_back(errors);

@@ -1,14 +1,10 @@
 #include "bench_runs.h"
 
-#include <cstdio>
+#include "edgefit/core/format.h"
 
 namespace edgefit::tools {
 
-std::string Number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", value);
-  return text;
-}
+std::string Number(double value) { return FormatNumber("%g", value); }
 
 std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& fit) {
   std::vector<std::string> parts;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "edgefit/bench/bench_case.h"
+#include "edgefit/core/format.h"
 
 namespace edgefit {
 namespace {
@@ -19,11 +20,6 @@ using nlohmann::json;
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string Format(const char* format, double value) {
-  char text[48];
-  std::snprintf(text, sizeof(text), format, value);
-  return text;
-}
 
 // A number of a run; null (how JSON writes NaN) reads as NaN.
 double Number(const json& object, const char* key) {
@@ -72,7 +68,7 @@ std::string Verdict(const json& run) {
 // A setting's value as text ("%g" for numbers, off/on for booleans).
 std::string SettingText(const json& value) {
   if (value.is_boolean()) return value.get<bool>() ? "on" : "off";
-  if (value.is_number()) return Format("%g", value.get<double>());
+  if (value.is_number()) return FormatNumber("%g", value.get<double>());
   if (value.is_string()) return value.get<std::string>();
   return "-";
 }
@@ -118,8 +114,8 @@ Table JointTable(const json& runs, const std::string& asset, bool prismatic, boo
       const double error = JointError(run, j, &unobservable);
       any_unobservable = any_unobservable || unobservable;
       row.push_back(!std::isfinite(error) ? "-"
-                    : unobservable        ? "(" + Format("%.4f", error) + ")"
-                                          : Format("%.4f", error));
+                    : unobservable        ? "(" + FormatNumber("%.4f", error) + ")"
+                                          : FormatNumber("%.4f", error));
     }
     table.rows.push_back(row);
   }
@@ -140,15 +136,15 @@ Table RunTable(const json& runs) {
                   "total",         "ok"};
   for (const json& run : runs) {
     const json& t = run["timing_s"];
-    auto seconds = [&](const char* key) { return Format("%.2f s", Number(t, key)); };
+    auto seconds = [&](const char* key) { return FormatNumber("%.2f s", Number(t, key)); };
     table.rows.push_back(
         {run["asset"], run["posture"], run["accessories"], run["weighting"], run["label"],
-         Format("%.2f M", 1e-6 * Number(run, "points")),
-         Format("%.3f", 1e3 * Number(run, "base_translation_m")),
-         Format("%.4f", Number(run, "base_rotation_rad") / kDeg),
-         Format("%.3f", 1e3 * Number(run, "base_survey_translation_m")) + ", " +
-             Format("%.4f", Number(run, "base_survey_rotation_rad") / kDeg),
-         Format("%.3f", 1e3 * Number(run, "tool_tip_m")), seconds("edges"), seconds("base_rough"),
+         FormatNumber("%.2f M", 1e-6 * Number(run, "points")),
+         FormatNumber("%.3f", 1e3 * Number(run, "base_translation_m")),
+         FormatNumber("%.4f", Number(run, "base_rotation_rad") / kDeg),
+         FormatNumber("%.3f", 1e3 * Number(run, "base_survey_translation_m")) + ", " +
+             FormatNumber("%.4f", Number(run, "base_survey_rotation_rad") / kDeg),
+         FormatNumber("%.3f", 1e3 * Number(run, "tool_tip_m")), seconds("edges"), seconds("base_rough"),
          seconds("base_precise"), seconds("chain"), seconds("refine"), seconds("total"),
          Verdict(run)});
   }
@@ -159,7 +155,7 @@ Table RunTable(const json& runs) {
 std::vector<std::string> StatsCells(const std::vector<double>& errors, const char* format) {
   if (errors.empty()) return {"-", "-", "-"};
   const ErrorStats stats = SummarizeErrors(errors);
-  return {Format(format, stats.mean), Format(format, stats.p95), Format(format, stats.max)};
+  return {FormatNumber(format, stats.mean), FormatNumber(format, stats.p95), FormatNumber(format, stats.max)};
 }
 
 // The observable joints' errors of a run, revolute [deg] and prismatic [mm].
@@ -212,12 +208,12 @@ Table SummaryTable(const json& runs) {
     for (const std::string& cell : StatsCells(revolute, "%.4f")) row.push_back(cell);
     for (const std::string& cell : StatsCells(prismatic, "%.3f")) row.push_back(cell);
     const ErrorStats t = SummarizeErrors(tip);
-    row.insert(row.end(), {Format("%.3f", t.mean), Format("%.3f", t.p95),
-                           Format("%.3f", SummarizeErrors(base).mean),
-                           Format("%.3f", SummarizeErrors(base_survey).mean),
-                           Format("%.0f%%", 100.0 * failed / n),
-                           Format("%.0f%%", 100.0 * not_ok / n),
-                           Format("%.1f", SummarizeErrors(time).mean)});
+    row.insert(row.end(), {FormatNumber("%.3f", t.mean), FormatNumber("%.3f", t.p95),
+                           FormatNumber("%.3f", SummarizeErrors(base).mean),
+                           FormatNumber("%.3f", SummarizeErrors(base_survey).mean),
+                           FormatNumber("%.0f%%", 100.0 * failed / n),
+                           FormatNumber("%.0f%%", 100.0 * not_ok / n),
+                           FormatNumber("%.1f", SummarizeErrors(time).mean)});
     table.rows.push_back(row);
   }
   return table;

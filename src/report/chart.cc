@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/core/format.h"
 #include "html.h"
 
 namespace edgefit {
@@ -15,11 +16,6 @@ namespace {
 constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e",
                                     "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
-std::string Format(const char* format, double value) {
-  char text[48];
-  std::snprintf(text, sizeof(text), format, value);
-  return text;
-}
 
 // An axis: data range to pixels, and where its ticks go.
 struct Axis {
@@ -42,7 +38,7 @@ struct Axis {
           const double l = std::log10(v);
           if (l < lo - 1e-9 || l > hi + 1e-9) continue;
           if (m != 1 && hi - lo > 3.0) continue;  // decades only over a wide range
-          ticks.emplace_back(v, Format("%g", v));
+          ticks.emplace_back(v, FormatNumber("%g", v));
         }
       }
       return ticks;
@@ -55,7 +51,7 @@ struct Axis {
       if (step >= raw) break;
     }
     for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) {
-      ticks.emplace_back(v, Format("%g", std::abs(v) < 1e-12 * step ? 0.0 : v));
+      ticks.emplace_back(v, FormatNumber("%g", std::abs(v) < 1e-12 * step ? 0.0 : v));
     }
     return ticks;
   }
@@ -124,15 +120,15 @@ std::string SvgChart(const Chart& chart, int width, int height) {
   std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"chart\" width=\"" +
                     std::to_string(width) + "\" height=\"" + std::to_string(height) +
                     "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-  svg += "<text x=\"" + Format("%.0f", left) + "\" y=\"16\" font-size=\"13\">" +
+  svg += "<text x=\"" + FormatNumber("%.0f", left) + "\" y=\"16\" font-size=\"13\">" +
          EscapeHtml(chart.title) + "</text>\n";
   // Grid and ticks.
   for (const auto& [v, label] : y_axis.Ticks()) {
     const double py = y_axis.Pixel(v);
-    svg += "<line x1=\"" + Format("%.1f", left) + "\" x2=\"" + Format("%.1f", width - right) +
-           "\" y1=\"" + Format("%.1f", py) + "\" y2=\"" + Format("%.1f", py) +
-           "\" stroke=\"#e5e5e5\"/>\n<text x=\"" + Format("%.1f", left - 4) + "\" y=\"" +
-           Format("%.1f", py + 4) + "\" text-anchor=\"end\">" + EscapeHtml(label) + "</text>\n";
+    svg += "<line x1=\"" + FormatNumber("%.1f", left) + "\" x2=\"" + FormatNumber("%.1f", width - right) +
+           "\" y1=\"" + FormatNumber("%.1f", py) + "\" y2=\"" + FormatNumber("%.1f", py) +
+           "\" stroke=\"#e5e5e5\"/>\n<text x=\"" + FormatNumber("%.1f", left - 4) + "\" y=\"" +
+           FormatNumber("%.1f", py + 4) + "\" text-anchor=\"end\">" + EscapeHtml(label) + "</text>\n";
   }
   std::vector<std::pair<double, std::string>> x_ticks;
   if (categorical) {
@@ -148,28 +144,28 @@ std::string SvgChart(const Chart& chart, int width, int height) {
       unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
       if (unique.size() <= 10) {
         x_ticks.clear();
-        for (const double v : unique) x_ticks.emplace_back(v, Format("%g", v));
+        for (const double v : unique) x_ticks.emplace_back(v, FormatNumber("%g", v));
       }
     }
   }
   const double axis_y = height - bottom;
   for (const auto& [v, label] : x_ticks) {
     const double px = x_axis.Pixel(v);
-    svg += "<line x1=\"" + Format("%.1f", px) + "\" x2=\"" + Format("%.1f", px) + "\" y1=\"" +
-           Format("%.1f", axis_y) + "\" y2=\"" + Format("%.1f", axis_y + 4) +
-           "\" stroke=\"#444\"/>\n<text x=\"" + Format("%.1f", px) + "\" y=\"" +
-           Format("%.1f", axis_y + 16) + "\" text-anchor=\"middle\">" + EscapeHtml(label) +
+    svg += "<line x1=\"" + FormatNumber("%.1f", px) + "\" x2=\"" + FormatNumber("%.1f", px) + "\" y1=\"" +
+           FormatNumber("%.1f", axis_y) + "\" y2=\"" + FormatNumber("%.1f", axis_y + 4) +
+           "\" stroke=\"#444\"/>\n<text x=\"" + FormatNumber("%.1f", px) + "\" y=\"" +
+           FormatNumber("%.1f", axis_y + 16) + "\" text-anchor=\"middle\">" + EscapeHtml(label) +
            "</text>\n";
   }
-  svg += "<line x1=\"" + Format("%.1f", left) + "\" x2=\"" + Format("%.1f", width - right) +
-         "\" y1=\"" + Format("%.1f", axis_y) + "\" y2=\"" + Format("%.1f", axis_y) +
-         "\" stroke=\"#444\"/>\n<line x1=\"" + Format("%.1f", left) + "\" x2=\"" +
-         Format("%.1f", left) + "\" y1=\"" + Format("%.1f", top) + "\" y2=\"" +
-         Format("%.1f", axis_y) + "\" stroke=\"#444\"/>\n";
-  svg += "<text x=\"" + Format("%.1f", 0.5 * (left + width - right)) + "\" y=\"" +
-         Format("%.1f", axis_y + 32) + "\" text-anchor=\"middle\">" + EscapeHtml(chart.x_label) +
+  svg += "<line x1=\"" + FormatNumber("%.1f", left) + "\" x2=\"" + FormatNumber("%.1f", width - right) +
+         "\" y1=\"" + FormatNumber("%.1f", axis_y) + "\" y2=\"" + FormatNumber("%.1f", axis_y) +
+         "\" stroke=\"#444\"/>\n<line x1=\"" + FormatNumber("%.1f", left) + "\" x2=\"" +
+         FormatNumber("%.1f", left) + "\" y1=\"" + FormatNumber("%.1f", top) + "\" y2=\"" +
+         FormatNumber("%.1f", axis_y) + "\" stroke=\"#444\"/>\n";
+  svg += "<text x=\"" + FormatNumber("%.1f", 0.5 * (left + width - right)) + "\" y=\"" +
+         FormatNumber("%.1f", axis_y + 32) + "\" text-anchor=\"middle\">" + EscapeHtml(chart.x_label) +
          "</text>\n";
-  svg += "<text transform=\"translate(14," + Format("%.1f", 0.5 * (top + axis_y)) +
+  svg += "<text transform=\"translate(14," + FormatNumber("%.1f", 0.5 * (top + axis_y)) +
          ") rotate(-90)\" text-anchor=\"middle\">" + EscapeHtml(chart.y_label) + "</text>\n";
   // Series: a polyline through the finite points, a marker on each.
   for (size_t s = 0; s < chart.series.size(); ++s) {
@@ -180,19 +176,19 @@ std::string SvgChart(const Chart& chart, int width, int height) {
     for (size_t k = 0; k < series.x.size() && k < series.y.size(); ++k) {
       if (!std::isfinite(series.y[k]) || !std::isfinite(series.x[k])) continue;
       const double px = x_axis.Pixel(series.x[k]), py = y_axis.Pixel(series.y[k]);
-      points += Format("%.1f", px) + "," + Format("%.1f", py) + " ";
-      markers += "<circle cx=\"" + Format("%.1f", px) + "\" cy=\"" + Format("%.1f", py) +
+      points += FormatNumber("%.1f", px) + "," + FormatNumber("%.1f", py) + " ";
+      markers += "<circle cx=\"" + FormatNumber("%.1f", px) + "\" cy=\"" + FormatNumber("%.1f", py) +
                  "\" r=\"3\" fill=\"" + colour + "\"><title>" + EscapeHtml(series.name) + ": " +
-                 Format("%g", series.y[k]) + "</title></circle>\n";
+                 FormatNumber("%g", series.y[k]) + "</title></circle>\n";
     }
     svg += "<polyline fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"1.5\"" +
            (series.dashed ? " stroke-dasharray=\"5,3\"" : "") + " points=\"" + points + "\"/>\n" +
            markers;
     const double ly = height - legend_height + 16.0 * s + 4;
-    svg += "<line x1=\"" + Format("%.1f", left) + "\" x2=\"" + Format("%.1f", left + 22) +
-           "\" y1=\"" + Format("%.1f", ly) + "\" y2=\"" + Format("%.1f", ly) + "\" stroke=\"" +
+    svg += "<line x1=\"" + FormatNumber("%.1f", left) + "\" x2=\"" + FormatNumber("%.1f", left + 22) +
+           "\" y1=\"" + FormatNumber("%.1f", ly) + "\" y2=\"" + FormatNumber("%.1f", ly) + "\" stroke=\"" +
            colour + "\" stroke-width=\"1.5\"" + (series.dashed ? " stroke-dasharray=\"5,3\"" : "") +
-           "/>\n<text x=\"" + Format("%.1f", left + 28) + "\" y=\"" + Format("%.1f", ly + 4) +
+           "/>\n<text x=\"" + FormatNumber("%.1f", left + 28) + "\" y=\"" + FormatNumber("%.1f", ly + 4) +
            "\">" + EscapeHtml(series.name) + "</text>\n";
   }
   svg += "</svg>\n";
