@@ -23,14 +23,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -156,16 +150,9 @@ int RunBatch(const Command& command) {
       failures.push_back(job.name);
       verdict = "FAILED (exit " + std::to_string(code) + "): " + error;
     } else {
-      std::ifstream result(job.out);
-      const nlohmann::json json = nlohmann::json::parse(result, nullptr, false);
-      const nlohmann::json quality =
-          json.is_object() ? json.value("quality", nlohmann::json::object()) : nlohmann::json();
-      const bool ok = quality.is_object() && quality.value("ok", false);
-      not_ok += !ok;
-      verdict = ok ? "ok"
-                   : "done, quality not ok: " + (quality.is_object()
-                                                     ? quality.value("message", std::string())
-                                                     : std::string("unreadable result"));
+      const RowResult row = ReadRow(job);
+      not_ok += !row.ok;
+      verdict = row.ok ? "ok" : "done, quality not ok: " + row.message;
     }
     std::printf("[%zu/%zu] %s: %s (%.1f s) -> %s\n", k + 1, mine.size(), job.name.c_str(),
                 verdict.c_str(), seconds, job.out.c_str());

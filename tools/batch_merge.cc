@@ -24,18 +24,6 @@ using nlohmann::json;
 
 constexpr double kDeg = M_PI / 180.0;
 
-enum class RowState { kDone, kFailed, kMissing };
-
-// What a row's output says.
-struct RowResult {
-  const Job* job = nullptr;
-  RowState state = RowState::kMissing;
-  bool ok = false;
-  std::string message;  // the fit's quality message or the failure
-  double seconds = std::numeric_limits<double>::quiet_NaN();
-  json result;  // result.json when done
-};
-
 // object[key], or null when object is not an object or has no such key
 // (result.json files come from anywhere: no lookup may throw).
 const json& Get(const json& object, const std::string& key) {
@@ -75,58 +63,6 @@ std::vector<std::pair<std::string, json>> FitResults(const json& output) {
 }
 
 
-RowResult ReadRow(const Job& job) {
-  RowResult row;
-  row.job = &job;
-  if (std::filesystem::exists(job.out)) {
-    std::ifstream in(job.out);
-    row.result = json::parse(in, nullptr, /*allow_exceptions=*/false);
-    const bool fit = Get(row.result, "quality").is_object();
-    const bool cell = Get(row.result, "instances").is_array() && Get(row.result, "ok").is_boolean();
-    if (!fit && !cell) {
-      row.state = RowState::kFailed;
-      row.message = "unreadable result: " + job.out + " is not the output of edgefit fit or cell";
-      return row;
-    }
-    row.state = RowState::kDone;
-    if (fit) {
-      const json& quality = Get(row.result, "quality");
-      row.ok = Get(quality, "ok").is_boolean() && Get(quality, "ok").get<bool>();
-      row.message = Text(Get(quality, "message"));
-    } else {
-      // A cell: ok when every model's count is met and every instance ok.
-      const json& instances = Get(row.result, "instances");
-      size_t ok = 0;
-      std::string first_not_ok;
-      for (const json& instance : instances) {
-        const bool instance_ok = Get(instance, "ok").is_boolean() && Get(instance, "ok").get<bool>();
-        ok += instance_ok;
-        if (!instance_ok && first_not_ok.empty()) {
-          first_not_ok = Text(Get(instance, "id")) + ": " + Text(Get(instance, "message"));
-        }
-      }
-      const bool counts_met = Get(row.result, "ok").get<bool>();
-      row.ok = counts_met && ok == instances.size();
-      row.message = std::to_string(instances.size()) + " instances, " + std::to_string(ok) +
-                    " ok" + (counts_met ? "" : "; a model's count was not met") +
-                    (first_not_ok.empty() ? "" : "; " + first_not_ok);
-    }
-    const json& total = Get(Get(row.result, "timing_s"), "total");
-    if (total.is_number()) {
-      row.seconds = total.get<double>();
-    }
-    return row;
-  }
-  std::ifstream failure(FailureRecordPath(job));
-  if (failure) {
-    row.state = RowState::kFailed;
-    std::getline(failure, row.message);
-    row.message = Trim(row.message);
-    return row;
-  }
-  row.message = "no " + job.out + " (not run, or stopped before it ended)";
-  return row;
-}
 
 std::string StateText(const RowResult& row) {
   switch (row.state) {
@@ -254,6 +190,59 @@ std::string MergedCsv(const std::vector<RowResult>& rows) {
 }
 
 }  // namespace
+
+RowResult ReadRow(const Job& job) {
+  RowResult row;
+  row.job = &job;
+  if (std::filesystem::exists(job.out)) {
+    std::ifstream in(job.out);
+    row.result = json::parse(in, nullptr, /*allow_exceptions=*/false);
+    const bool fit = Get(row.result, "quality").is_object();
+    const bool cell = Get(row.result, "instances").is_array() && Get(row.result, "ok").is_boolean();
+    if (!fit && !cell) {
+      row.state = RowState::kFailed;
+      row.message = "unreadable result: " + job.out + " is not the output of edgefit fit or cell";
+      return row;
+    }
+    row.state = RowState::kDone;
+    if (fit) {
+      const json& quality = Get(row.result, "quality");
+      row.ok = Get(quality, "ok").is_boolean() && Get(quality, "ok").get<bool>();
+      row.message = Text(Get(quality, "message"));
+    } else {
+      // A cell: ok when every model's count is met and every instance ok.
+      const json& instances = Get(row.result, "instances");
+      size_t ok = 0;
+      std::string first_not_ok;
+      for (const json& instance : instances) {
+        const bool instance_ok = Get(instance, "ok").is_boolean() && Get(instance, "ok").get<bool>();
+        ok += instance_ok;
+        if (!instance_ok && first_not_ok.empty()) {
+          first_not_ok = Text(Get(instance, "id")) + ": " + Text(Get(instance, "message"));
+        }
+      }
+      const bool counts_met = Get(row.result, "ok").get<bool>();
+      row.ok = counts_met && ok == instances.size();
+      row.message = std::to_string(instances.size()) + " instances, " + std::to_string(ok) +
+                    " ok" + (counts_met ? "" : "; a model's count was not met") +
+                    (first_not_ok.empty() ? "" : "; " + first_not_ok);
+    }
+    const json& total = Get(Get(row.result, "timing_s"), "total");
+    if (total.is_number()) {
+      row.seconds = total.get<double>();
+    }
+    return row;
+  }
+  std::ifstream failure(FailureRecordPath(job));
+  if (failure) {
+    row.state = RowState::kFailed;
+    std::getline(failure, row.message);
+    row.message = Trim(row.message);
+    return row;
+  }
+  row.message = "no " + job.out + " (not run, or stopped before it ended)";
+  return row;
+}
 
 int MergeBatch(const Command& command, const std::string& manifest, const std::vector<Job>& jobs) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out_csv, FLAGS_out_report}));
