@@ -39,7 +39,7 @@ std::string Text(const json& value, const std::string& fallback = "") {
 
 // The results in the edgefit fit layout a row's output holds, each with a
 // prefix for its joints: the fit's own (""), or each instance's of a cell
-// ("robot_0/"; an instance written to --out_dir is read from there).
+// ("robot_1/"; an instance written to --out_dir is read from there).
 std::vector<std::pair<std::string, json>> FitResults(const json& output) {
   std::vector<std::pair<std::string, json>> results;
   if (Get(output, "quality").is_object()) {
@@ -61,8 +61,6 @@ std::vector<std::pair<std::string, json>> FitResults(const json& output) {
   }
   return results;
 }
-
-
 
 std::string StateText(const RowResult& row) {
   switch (row.state) {
