@@ -171,7 +171,8 @@ int RunBatch(const Command& command) {
 
 Command BatchCommand() {
   return {"batch",
-          "many fits from a manifest (CSV), split into shards across processes or machines",
+          "many fits and cells from a manifest (CSV), split into shards across processes, "
+          "machines or a Slurm array, and merged again",
           "Usage:\n"
           "  edgefit batch --manifest=jobs.csv [--rows=3,7-9] [--shard=i/N] [--threads=N]\n"
           "  edgefit batch --manifest=jobs.csv --merge [--out_csv=F.csv] [--out_report=B.html]\n"

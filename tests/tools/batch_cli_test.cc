@@ -78,17 +78,24 @@ TEST_F(CliTest, BatchRowsAndMergeFlags) {
         "job" + std::to_string(k) + "," + kModel + ",missing.ptx,r" + std::to_string(k) + ".json\n";
   }
   const std::string manifest = Write("jobs.csv", rows);
-  // --rows picks rows (ranges too), then the shards split them.
-  const RunResult r = Run("batch --manifest=" + manifest + " --rows=4,1-2 --shard=1/2");
+  // --rows picks rows (ranges too), then the shards split them; the progress
+  // says which job of how many and, after the first, the time left.
+  const RunResult r =
+      Run("batch --manifest=" + manifest + " --rows=4,1-2,3 --shard=1/2 --progress=always");
   EXPECT_NE(r.out.find("] job1:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("] job3:"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("] job2:"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("] job4:"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find(" s] batch: job 1/2: row 1, job1\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" s] batch: job 2/2, about "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" s left: row 3, job3\n"), std::string::npos) << r.err;
   ExpectBadInput("batch --manifest=" + manifest + " --rows=5", "past the manifest's 5 rows");
   ExpectBadInput("batch --manifest=" + manifest + " --rows=2-a", "--rows: '2-a'");
   ExpectBadInput("batch --manifest=" + manifest + " --merge --rows=1", "--merge reads every row");
   ExpectBadInput("batch --manifest=" + manifest + " --out_csv=" + Path("x.csv"), "--merge");
   // Nothing run: every row missing, all five to resubmit.
   fs::remove(Path("r1.json.failed"));
+  fs::remove(Path("r3.json.failed"));
   const RunResult merged = Run("batch --manifest=" + manifest + " --merge");
   EXPECT_EQ(merged.exit_code, 1);
   EXPECT_NE(merged.out.find("merge: 5 rows: 0 done (0 not ok), 0 failed, 5 missing"),
