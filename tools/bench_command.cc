@@ -23,10 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -89,41 +86,6 @@ DEFINE_bool(fit_progress, false,
 namespace edgefit::tools {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-
-// The fit flags' options (fit_flags.h) with the setting's axes over them.
-Status OptionsFor(AssetKind kind, const FitSetting& fit, uint64_t seed, FitOptions* options) {
-  EDGEFIT_RETURN_IF_ERROR(FitOptionsFromFlags(kind, options));
-  options->uniform_weights = fit.weighting == "uniform";
-  options->edges.w_high = fit.w_high;
-  options->seed = seed;
-  options->residuals.loss = fit.loss;
-  options->residuals.lambda = fit.lambda;
-  for (WeightedIcpOptions* icp : {&options->base.icp, &options->chain.joint_icp,
-                                  &options->chain.subtree_icp, &options->refinement.chain.icp}) {
-    icp->correspondence.use_lattice = fit.search == "lattice";
-  }
-  options->chain.sweep.revolute_step = fit.sweep_step_deg * kDeg;
-  options->refinement.chain.refine = fit.refine_chain;
-  return Status::Ok();
-}
-
-// Parses a comma list of numbers; an empty list gives `fallback`.
-Status ParseNumbers(const std::string& flag, const std::string& list, double fallback,
-                    std::vector<double>* out) {
-  out->clear();
-  for (const std::string& item : SplitList(list)) {
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    if (end == item.c_str() || *end != '\0' || !std::isfinite(value)) {
-      return Status::Error("--" + flag + ": '" + item + "' is not a number");
-    }
-    out->push_back(value);
-  }
-  if (out->empty()) out->push_back(fallback);
-  return Status::Ok();
-}
-
 int RunBench(const Command& command) {
   const std::vector<std::string> assets = SplitList(FLAGS_assets);
   const std::vector<std::string> sceneries = SplitList(FLAGS_scenes);
@@ -140,16 +102,16 @@ int RunBench(const Command& command) {
   }
   std::vector<double> w_highs, lambdas, sweep_steps, noises, spacings, scanner_counts;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                               ParseNumbers("w_highs", FLAGS_w_highs, FLAGS_w_high, &w_highs));
+                               ParseNumberList("w_highs", FLAGS_w_highs, FLAGS_w_high, &w_highs));
   EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                               ParseNumbers("lambdas", FLAGS_lambdas, FLAGS_lambda, &lambdas));
+                               ParseNumberList("lambdas", FLAGS_lambdas, FLAGS_lambda, &lambdas));
   EDGEFIT_RETURN_IF_ERROR_EXIT(
-      command, ParseNumbers("sweep_steps_deg", FLAGS_sweep_steps_deg, 1.0, &sweep_steps));
+      command, ParseNumberList("sweep_steps_deg", FLAGS_sweep_steps_deg, 1.0, &sweep_steps));
   EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                               ParseNumbers("noises_mm", FLAGS_noises_mm, FLAGS_noise_mm, &noises));
+                               ParseNumberList("noises_mm", FLAGS_noises_mm, FLAGS_noise_mm, &noises));
   EDGEFIT_RETURN_IF_ERROR_EXIT(
-      command, ParseNumbers("spacings_mm", FLAGS_spacings_mm, FLAGS_spacing_mm, &spacings));
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseNumbers("scanner_counts", FLAGS_scanner_counts,
+      command, ParseNumberList("spacings_mm", FLAGS_spacings_mm, FLAGS_spacing_mm, &spacings));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ParseNumberList("scanner_counts", FLAGS_scanner_counts,
                                                      FLAGS_scanners, &scanner_counts));
   std::vector<std::string> losses = SplitList(FLAGS_losses);
   if (losses.empty()) losses.push_back(FLAGS_loss);
@@ -321,7 +283,7 @@ int RunBench(const Command& command) {
                   Progress("bench: fit " + counter.Next() + ": " + scene + ", " + fit.weighting +
                            " weights, " + run.label);
                   FitOptions options;
-                  EDGEFIT_RETURN_IF_ERROR_EXIT(command, OptionsFor(asset.kind, fit, seed, &options));
+                  EDGEFIT_RETURN_IF_ERROR_EXIT(command, BenchFitOptions(asset.kind, fit, seed, &options));
                   EDGEFIT_RETURN_IF_ERROR_EXIT(
                       command,
                       FitBenchCase(model, c, scan.scans, T_survey_world, options, &run.result,
@@ -344,20 +306,7 @@ int RunBench(const Command& command) {
   for (const Run& run : runs) runs_json.push_back(RunJson(run));
   for (const Table& table : BenchTables(runs_json)) std::printf("%s", MarkdownTable(table).c_str());
   if (!FLAGS_out_csv.empty()) {
-    std::ostringstream csv;
-    csv << "asset,posture,accessories,weighting,noise_mm,scanners,repeat,w_high,lambda,loss,"
-           "sweep_step_deg,search,refine_chain,joint,prismatic,truth,fit,error,ok,failed,spacing_mm\n";
-    for (const Run& run : runs) {
-      for (const JointError& e : run.result.errors.joints) {
-        csv << run.asset << ',' << run.posture << ',' << run.scan.accessories << ','
-            << run.fit.weighting << ',' << run.scan.noise_mm << ',' << run.scan.scanners << ','
-            << run.scan.repeat << ',' << run.fit.w_high << ',' << run.fit.lambda << ','
-            << run.fit.loss << ',' << run.fit.sweep_step_deg << ',' << run.fit.search << ','
-            << run.fit.refine_chain << ',' << e.name << ',' << e.prismatic << ',' << e.truth << ','
-            << e.fit << ',' << e.error << ',' << run.result.ok << ',' << run.result.failed << ',' << run.scan.spacing_mm << '\n';
-      }
-    }
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, WriteStringAtomically(FLAGS_out_csv, csv.str()));
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, WriteStringAtomically(FLAGS_out_csv, RunsCsv(runs)));
   }
   if (!FLAGS_out_json.empty()) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command,

@@ -1,10 +1,30 @@
 #include "bench_runs.h"
 
+#include <cmath>
+#include <sstream>
+
 #include "edgefit/core/format.h"
+#include "fit_flags.h"
 
 namespace edgefit::tools {
 
 std::string Number(double value) { return FormatNumber("%g", value); }
+
+Status BenchFitOptions(AssetKind kind, const FitSetting& fit, uint64_t seed, FitOptions* options) {
+  EDGEFIT_RETURN_IF_ERROR(FitOptionsFromFlags(kind, options));
+  options->uniform_weights = fit.weighting == "uniform";
+  options->edges.w_high = fit.w_high;
+  options->seed = seed;
+  options->residuals.loss = fit.loss;
+  options->residuals.lambda = fit.lambda;
+  for (WeightedIcpOptions* icp : {&options->base.icp, &options->chain.joint_icp,
+                                  &options->chain.subtree_icp, &options->refinement.chain.icp}) {
+    icp->correspondence.use_lattice = fit.search == "lattice";
+  }
+  options->chain.sweep.revolute_step = fit.sweep_step_deg * M_PI / 180.0;
+  options->refinement.chain.refine = fit.refine_chain;
+  return Status::Ok();
+}
 
 std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& fit) {
   std::vector<std::string> parts;
@@ -78,6 +98,25 @@ nlohmann::json RunJson(const Run& run) {
           {"ok", run.result.ok},
           {"message", run.result.message},
           {"failed", run.result.failed}};
+}
+
+std::string RunsCsv(const std::vector<Run>& runs) {
+  std::ostringstream csv;
+  csv << "asset,posture,accessories,weighting,noise_mm,scanners,repeat,w_high,lambda,loss,"
+         "sweep_step_deg,search,refine_chain,joint,prismatic,truth,fit,error,ok,failed,"
+         "spacing_mm\n";
+  for (const Run& run : runs) {
+    for (const JointError& e : run.result.errors.joints) {
+      csv << run.asset << ',' << run.posture << ',' << run.scan.accessories << ','
+          << run.fit.weighting << ',' << run.scan.noise_mm << ',' << run.scan.scanners << ','
+          << run.scan.repeat << ',' << run.fit.w_high << ',' << run.fit.lambda << ','
+          << run.fit.loss << ',' << run.fit.sweep_step_deg << ',' << run.fit.search << ','
+          << run.fit.refine_chain << ',' << e.name << ',' << e.prismatic << ',' << e.truth << ','
+          << e.fit << ',' << e.error << ',' << run.result.ok << ',' << run.result.failed << ','
+          << run.scan.spacing_mm << '\n';
+    }
+  }
+  return csv.str();
 }
 
 }  // namespace edgefit::tools

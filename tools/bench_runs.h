@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "edgefit/bench/bench_case.h"
+#include "edgefit/core/status.h"
+#include "edgefit/pipeline/asset_kind.h"
+#include "edgefit/pipeline/fit_options.h"
 
 namespace edgefit::tools {
 
@@ -51,6 +54,12 @@ struct Axes {
 std::string Number(double value);
 // The varied settings of a run, e.g. "w_high=5" ("-" when none varies).
 std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& fit);
+
+// The fit flags' options (fit_flags.h) with the setting's axes over them.
+Status BenchFitOptions(AssetKind kind, const FitSetting& fit, uint64_t seed, FitOptions* options);
+
+// One CSV line per fitted joint of every run (edgefit bench --out_csv).
+std::string RunsCsv(const std::vector<Run>& runs);
 
 // The run as an object of the JSON array of `edgefit bench --out_json`
 // (bench_tables.h reads it).

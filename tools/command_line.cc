@@ -187,6 +187,21 @@ Status CheckOutputPaths(const std::vector<std::string>& paths) {
   return Status::Ok();
 }
 
+Status ParseNumberList(const std::string& flag, const std::string& list, double fallback,
+                       std::vector<double>* out) {
+  out->clear();
+  for (const std::string& item : SplitList(list)) {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0' || !std::isfinite(value)) {
+      return Status::Error("--" + flag + ": '" + item + "' is not a number");
+    }
+    out->push_back(value);
+  }
+  if (out->empty()) out->push_back(fallback);
+  return Status::Ok();
+}
+
 std::string CommandText(const Command& command) {
   std::string text = std::string("edgefit ") + command.name;
   for (const std::string& flag : command.flags) {

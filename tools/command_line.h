@@ -70,6 +70,11 @@ std::string CommandText(const Command& command);
 // Splits "a,b,,c" into {"a", "b", "c"}.
 std::vector<std::string> SplitList(const std::string& list);
 
+// A comma list of numbers ("1,10,100") for --flag; an empty list gives
+// {fallback}.
+Status ParseNumberList(const std::string& flag, const std::string& list, double fallback,
+                       std::vector<double>* out);
+
 // "i/N" (--shard): share i of N, 0 <= i < N.
 Status ParseShard(const std::string& text, int* index, int* count);
 

@@ -9,23 +9,21 @@
 #include <string>
 #include <vector>
 
+#include "bench_run_fields.h"
+#include "edgefit/bench/ablation_charts.h"
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/core/format.h"
 
 namespace edgefit {
 namespace {
 
+using bench_run::IsPrismatic;
+using bench_run::kDeg;
+using bench_run::kNaN;
+using bench_run::Number;
+using bench_run::PoolErrors;
+using bench_run::SettingText;
 using nlohmann::json;
-
-constexpr double kDeg = M_PI / 180.0;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-
-// A number of a run; null (how JSON writes NaN) reads as NaN.
-double Number(const json& object, const char* key) {
-  const json& v = object.at(key);
-  return v.is_number() ? v.get<double>() : kNaN;
-}
 
 bool IsNumberOrNull(const json& v) { return v.is_number() || v.is_null(); }
 
@@ -43,11 +41,6 @@ std::vector<std::string> JointNames(const json& run) {
   return names;
 }
 
-bool IsPrismatic(const json& run, const std::string& joint) {
-  const json& p = run["prismatic_joints"];
-  return std::find(p.begin(), p.end(), joint) != p.end();
-}
-
 // The error of `joint` in degrees or mm; *unobservable when the fit called
 // it so; NaN when the run has none.
 double JointError(const json& run, const std::string& joint, bool* unobservable) {
@@ -63,14 +56,6 @@ double JointError(const json& run, const std::string& joint, bool* unobservable)
 
 std::string Verdict(const json& run) {
   return run["failed"].get<bool>() ? "FAILED" : (run["ok"].get<bool>() ? "ok" : "not ok");
-}
-
-// A setting's value as text ("%g" for numbers, off/on for booleans).
-std::string SettingText(const json& value) {
-  if (value.is_boolean()) return value.get<bool>() ? "on" : "off";
-  if (value.is_number()) return FormatNumber("%g", value.get<double>());
-  if (value.is_string()) return value.get<std::string>();
-  return "-";
 }
 
 // Whether any run carries a label (a setting other than scene and weights
@@ -158,18 +143,6 @@ std::vector<std::string> StatsCells(const std::vector<double>& errors, const cha
   return {FormatNumber(format, stats.mean), FormatNumber(format, stats.p95), FormatNumber(format, stats.max)};
 }
 
-// The observable joints' errors of a run, revolute [deg] and prismatic [mm].
-void PoolErrors(const json& run, std::vector<double>* revolute, std::vector<double>* prismatic) {
-  for (const auto& [joint, value] : run["joint_errors"].items()) {
-    if (!value.is_number()) continue;
-    if (IsPrismatic(run, joint)) {
-      prismatic->push_back(1e3 * value.get<double>());
-    } else {
-      revolute->push_back(value.get<double>() / kDeg);
-    }
-  }
-}
-
 Table SummaryTable(const json& runs) {
   Table table;
   table.heading = "Per setting (postures and repeats pooled)";
@@ -217,114 +190,6 @@ Table SummaryTable(const json& runs) {
     table.rows.push_back(row);
   }
   return table;
-}
-
-// An ablation axis: its key in a run's "settings", how the plots name it,
-// whether its values are names rather than numbers.
-struct AblationAxis {
-  const char* key;
-  const char* name;
-  bool categorical;
-};
-constexpr AblationAxis kAxes[] = {
-    {"w_high", "w_high (Eq. 6)", false},
-    {"lambda", "lambda (Eq. 10/14)", false},
-    {"loss", "loss of the precise stages", true},
-    {"sweep_step_deg", "sweep step [deg]", false},
-    {"search", "correspondence search", true},
-    {"refine_chain", "whole-chain refinement", true},
-    {"noise_mm", "range noise sigma [mm]", false},
-    {"scanners", "scanners", false},
-    {"sensor", "sensor", true},
-    {"spacing_mm", "scan spacing [mm]", false},
-};
-
-// The axes whose values differ between the runs.
-std::vector<const AblationAxis*> VariedAxes(const json& runs) {
-  std::vector<const AblationAxis*> varied;
-  for (const AblationAxis& axis : kAxes) {
-    std::set<std::string> values;
-    for (const json& run : runs) values.insert(SettingText(run["settings"].value(axis.key, json())));
-    if (values.size() > 1) varied.push_back(&axis);
-  }
-  return varied;
-}
-
-// Mean error against one axis: a series per (asset, scene, weights, the
-// other axes' values); `prismatic`: prismatic joints in mm, else revolute
-// in degrees. An empty chart when no run has such joints.
-Chart AxisChart(const json& runs, const AblationAxis& axis,
-                const std::vector<const AblationAxis*>& varied, bool prismatic) {
-  Chart chart;
-  chart.title = std::string(prismatic ? "prismatic" : "revolute") + " joints: mean error against " +
-                axis.name;
-  chart.x_label = axis.name;
-  chart.y_label = prismatic ? "mean error [mm]" : "mean error [deg]";
-  // The axis' values, in order (numbers sorted, names as they first came).
-  std::vector<std::string> values;
-  std::vector<double> numbers;
-  for (const json& run : runs) {
-    const json& v = run["settings"].value(axis.key, json());
-    const std::string text = SettingText(v);
-    if (std::find(values.begin(), values.end(), text) != values.end()) continue;
-    values.push_back(text);
-    numbers.push_back(v.is_number() ? v.get<double>() : kNaN);
-  }
-  if (!axis.categorical) {
-    std::vector<size_t> order(values.size());
-    for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return numbers[a] < numbers[b]; });
-    std::vector<std::string> v2;
-    std::vector<double> n2;
-    for (const size_t k : order) v2.push_back(values[k]), n2.push_back(numbers[k]);
-    values = v2;
-    numbers = n2;
-    chart.log_x = numbers.front() > 0.0 && numbers.back() / numbers.front() >= 10.0;
-  } else {
-    chart.categories = values;
-  }
-  std::vector<std::string> series_keys;
-  std::map<std::string, std::vector<std::vector<double>>> pooled;  // key -> per value
-  for (const json& run : runs) {
-    std::string key = run["asset"].get<std::string>() + ", " +
-                      run["accessories"].get<std::string>() + " accessories, " +
-                      run["weighting"].get<std::string>() + " weights";
-    for (const AblationAxis* other : varied) {
-      if (other != &axis) key += ", " + std::string(other->key) + "=" +
-                                 SettingText(run["settings"].value(other->key, json()));
-    }
-    if (pooled.count(key) == 0) {
-      series_keys.push_back(key);
-      pooled[key].resize(values.size());
-    }
-    const size_t k = static_cast<size_t>(
-        std::find(values.begin(), values.end(), SettingText(run["settings"].value(axis.key, json()))) -
-        values.begin());
-    std::vector<double> revolute, prismatic_errors;
-    PoolErrors(run, &revolute, &prismatic_errors);
-    const std::vector<double>& errors = prismatic ? prismatic_errors : revolute;
-    pooled[key][k].insert(pooled[key][k].end(), errors.begin(), errors.end());
-  }
-  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-  for (const std::string& key : series_keys) {
-    ChartSeries series;
-    series.name = key;
-    bool any = false;
-    for (size_t k = 0; k < values.size(); ++k) {
-      series.x.push_back(axis.categorical ? static_cast<double>(k) : numbers[k]);
-      const std::vector<double>& errors = pooled[key][k];
-      const double mean = errors.empty() ? kNaN : SummarizeErrors(errors).mean;
-      series.y.push_back(mean);
-      if (std::isfinite(mean)) {
-        any = true;
-        if (mean > 0.0) lo = std::min(lo, mean);
-        hi = std::max(hi, mean);
-      }
-    }
-    if (any) chart.series.push_back(series);
-  }
-  chart.log_y = std::isfinite(lo) && hi / lo >= 20.0;
-  return chart;
 }
 
 }  // namespace
@@ -403,18 +268,6 @@ std::vector<Table> BenchTables(const json& runs) {
   tables.push_back(RunTable(runs));
   if (labelled || Repeated(runs)) tables.push_back(SummaryTable(runs));
   return tables;
-}
-
-std::vector<Chart> AblationCharts(const json& runs) {
-  std::vector<Chart> charts;
-  const std::vector<const AblationAxis*> varied = VariedAxes(runs);
-  for (const AblationAxis* axis : varied) {
-    for (const bool prismatic : {false, true}) {
-      Chart chart = AxisChart(runs, *axis, varied, prismatic);
-      if (!chart.series.empty()) charts.push_back(chart);
-    }
-  }
-  return charts;
 }
 
 TablesReport BenchReport(const json& runs, const std::string& command) {

@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include "edgefit/core/status.h"
-#include "edgefit/report/chart.h"
 #include "edgefit/report/table.h"
 #include "edgefit/report/tables_report.h"
 
@@ -27,13 +26,6 @@ Status CheckBenchRuns(const nlohmann::json& runs);
 // repeats), the summary per setting: mean, p95 and max per joint kind, tool
 // tip, base, failure and not-ok rates, mean time.
 std::vector<Table> BenchTables(const nlohmann::json& runs);
-
-// Per ablation axis with more than one value (w_high, lambda, loss, sweep
-// step, search, refinement, noise, scanners, sensor, spacing): the mean
-// error of the observable revolute joints [deg], and of the prismatic ones
-// [mm], against the axis; a line per asset, scene, weighting and the other
-// axes' values; postures and repeats pooled.
-std::vector<Chart> AblationCharts(const nlohmann::json& runs);
 
 // The bench's report: what ran (`command`), the plots, the tables.
 TablesReport BenchReport(const nlohmann::json& runs, const std::string& command);
