@@ -385,6 +385,7 @@ Command BenchCommand() {
        "station_rounds",
        "station_max_covered_share",
        "covering_rounds",
+       "visibility_tolerance_mm",
        "remove_mixed_pixels",
        "mixed_pixel_tolerance_mm",
        "mixed_pixel_lines",

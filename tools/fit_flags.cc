@@ -39,6 +39,10 @@ DEFINE_double(station_max_covered_share, 0.2,
 DEFINE_int32(covering_rounds, 2,
              "Rounds of the whole-chain refinement without the coverings found at the last "
              "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
+DEFINE_double(visibility_tolerance_mm, 2.0,
+              "The whole-chain refinement counts a CAD sample as seen when a scan's range at its "
+              "cell is at most this much nearer than the sample [mm]: wider lets in samples just "
+              "behind a nearer surface, which pull their link toward it.");
 DEFINE_bool(remove_mixed_pixels, false,
             "Remove mixed pixels (a range between a foreground edge and the surface behind it) "
             "from the scans before the edges and the fit.");
@@ -77,6 +81,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->stations.rounds = FLAGS_station_rounds;
   options->stations.max_covered_share = FLAGS_station_max_covered_share;
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
+  options->refinement.chain.visibility_tolerance = FLAGS_visibility_tolerance_mm * 1e-3;
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
   options->mixed_pixels.min_lines = FLAGS_mixed_pixel_lines;
@@ -104,7 +109,7 @@ std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own) {
   for (const char* flag : {"weighting", "w_high", "loss", "loss_scale_mm", "lambda",
                            "parameterization", "refine_chain", "align_stations",
                            "station_rounds", "station_max_covered_share", "covering_rounds",
-                           "remove_mixed_pixels", "mixed_pixel_tolerance_mm", "mixed_pixel_lines",
+                           "visibility_tolerance_mm", "remove_mixed_pixels", "mixed_pixel_tolerance_mm", "mixed_pixel_lines",
                            "mixed_pixel_neighbour_lines"}) {
     own.emplace_back(flag);
   }

@@ -68,7 +68,19 @@ Status ChainFitter::FitBranch(const Pose& T_world_base, size_t i, double value,
       EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q_other, &(*other_records)[k]));
     }
   }
-  return RefineSubtrees(T_world_base, i, j.child_link, other_records, q_other);
+  // The subtree pass again while it still moves the joint: an ICP that ran
+  // out of iterations on its way back to the other value is no second
+  // basin (a bare FANUC's forearm roll went 15 deg of the 22 in one pass
+  // and was called ambiguous).
+  const size_t jj = static_cast<size_t>(records[i].joint);
+  for (int pass = 0; pass < options_.branch_passes; ++pass) {
+    const double before = (*q_other)[jj];
+    EDGEFIT_RETURN_IF_ERROR(RefineSubtrees(T_world_base, i, j.child_link, other_records, q_other));
+    if (Apart(j, (*q_other)[jj], before) < options_.branch_settled * Distinct(j, options_.sweep)) {
+      break;
+    }
+  }
+  return Status::Ok();
 }
 
 double ChainFitter::BranchGain(const Pose& T_world_base, const std::vector<double>& q,

@@ -39,6 +39,8 @@ bool ChainOptions::IsValid(std::string* error) const {
     return fail("pinning_revolute must be > 0 and pinning_mean_loss >= 0");
   }
   if (!(alike_share >= 0.0 && alike_share <= 1.0)) return fail("alike_share must be in [0, 1]");
+  if (branch_passes < 1) return fail("branch_passes must be at least 1");
+  if (!(branch_settled > 0.0)) return fail("branch_settled must be positive");
   if (!(final_basin_revolute > 0.0) || !(final_basin_prismatic > 0.0)) {
     return fail("final_basin_revolute and final_basin_prismatic must be > 0");
   }

@@ -82,6 +82,12 @@ struct ChainOptions {
   // the loss difference. The per-sample margin still divides by the whole
   // subtree's samples, so the bounds above keep their scale.
   double alike_share = 0.25;
+  // A branch's subtree pass is run up to branch_passes times, again while
+  // it moved the branch's joint by more than branch_settled of the sweep's
+  // distinct-basin distance (5 deg, 20 mm): the value a branch is compared
+  // at is where its ICP settled.
+  int branch_passes = 4;
+  double branch_settled = 0.2;
   // CheckFinalBasins: a sweep's best at least this far from the final value
   // (and better by ambiguity_mean_loss per sample) is another basin, and
   // followed as a branch. The jaw's is below the sweep's distinct_prismatic

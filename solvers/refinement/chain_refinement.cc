@@ -29,6 +29,10 @@ WeightedIcpOptions ChainRefinementOptions::DefaultIcp() {
 
 bool ChainRefinementOptions::IsValid(std::string* error) const {
   if (!icp.IsValid(error)) return false;
+  if (!(visibility_tolerance > 0.0)) {
+    if (error != nullptr) *error = "chain refinement: visibility_tolerance must be positive";
+    return false;
+  }
   if (icp.point_to_plane && icp.plane_normals != WeightedIcpOptions::PlaneNormals::kModel) {
     if (error != nullptr) *error = "chain refinement: point_to_plane needs model normals";
     return false;
@@ -301,8 +305,8 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
   summary->stop_reason = options.refine ? IcpStopReason::kMaxIterations : IcpStopReason::kConverged;
   for (int iteration = 0; options.refine && iteration < icp.max_iterations; ++iteration) {
     const std::vector<Pose> T_world_link = model.ForwardKinematics(q_full, T_base);
-    SelectAndPose(link_samples, T_world_link, visibility, icp.visibility, gated.max_distance,
-                  &posed);
+    SelectAndPose(link_samples, T_world_link, visibility, icp.visibility,
+                  std::min(options.visibility_tolerance, gated.max_distance), &posed);
     search->Find(posed.q_world, crop_world, gated, &correspondences);
     if (correspondences.size() < static_cast<size_t>(icp.min_correspondences)) {
       summary->stop_reason = IcpStopReason::kTooFewCorrespondences;
@@ -342,7 +346,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
   if (options.covariance) {
     gated.max_distance = final_gate;
     SelectAndPose(link_samples, model.ForwardKinematics(q_full, T_base), visibility, icp.visibility,
-                  final_gate, &posed);
+                  std::min(options.visibility_tolerance, final_gate), &posed);
     search->Find(posed.q_world, crop_world, gated, &correspondences);
     ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, icp.point_to_plane,
                        batch, loss.get());
