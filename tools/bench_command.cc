@@ -387,6 +387,7 @@ Command BenchCommand() {
        "covering_rounds",
        "visibility_tolerance_mm",
        "remove_mixed_pixels",
+       "refine_without_mixed_pixels",
        "mixed_pixel_tolerance_mm",
        "mixed_pixel_lines",
        "mixed_pixel_neighbour_lines",

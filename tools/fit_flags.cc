@@ -46,6 +46,9 @@ DEFINE_double(visibility_tolerance_mm, 2.0,
 DEFINE_bool(remove_mixed_pixels, false,
             "Remove mixed pixels (a range between a foreground edge and the surface behind it) "
             "from the scans before the edges and the fit.");
+DEFINE_bool(refine_without_mixed_pixels, true,
+            "The whole-chain refinement (the final values) on the scans without their mixed "
+            "pixels; the stages before it keep them.");
 DEFINE_double(mixed_pixel_tolerance_mm, 5.0,
               "A mixed pixel lies this far off the surfaces on both sides of it [mm].");
 DEFINE_int32(mixed_pixel_lines, 3,
@@ -83,6 +86,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
   options->refinement.chain.visibility_tolerance = FLAGS_visibility_tolerance_mm * 1e-3;
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
+  options->refine_without_mixed_pixels = FLAGS_refine_without_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
   options->mixed_pixels.min_lines = FLAGS_mixed_pixel_lines;
   options->mixed_pixels.neighbour_lines = FLAGS_mixed_pixel_neighbour_lines;
@@ -109,8 +113,9 @@ std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own) {
   for (const char* flag : {"weighting", "w_high", "loss", "loss_scale_mm", "lambda",
                            "parameterization", "refine_chain", "align_stations",
                            "station_rounds", "station_max_covered_share", "covering_rounds",
-                           "visibility_tolerance_mm", "remove_mixed_pixels", "mixed_pixel_tolerance_mm", "mixed_pixel_lines",
-                           "mixed_pixel_neighbour_lines"}) {
+                           "visibility_tolerance_mm", "remove_mixed_pixels",
+                           "refine_without_mixed_pixels", "mixed_pixel_tolerance_mm",
+                           "mixed_pixel_lines", "mixed_pixel_neighbour_lines"}) {
     own.emplace_back(flag);
   }
   return own;

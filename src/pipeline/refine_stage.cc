@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "edgefit/scan/mixed_pixels.h"
 #include "solvers/refinement/chain_refinement.h"
 #include "solvers/refinement/coverings.h"
 #include "stages.h"
@@ -30,10 +31,22 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   const auto start = std::chrono::steady_clock::now();
   const ChainRefinementOptions& refinement = options.refinement.chain;
   if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
+  // Its scans: without their mixed pixels (FitOptions::refine_without_mixed_pixels).
+  ScanSet unmixed;
+  size_t mixed_pixels = 0;
+  const bool leave_out_mixed =
+      refinement.refine && options.refine_without_mixed_pixels && !options.remove_mixed_pixels;
+  if (leave_out_mixed) unmixed = WithoutMixedPixels(scans, options.mixed_pixels, &mixed_pixels);
+  const ScanSet& refine_scans = leave_out_mixed ? unmixed : scans;
+  CorrespondenceSearch unmixed_search(&refine_scans, weights);
+  CorrespondenceSearch* refine_search = leave_out_mixed ? &unmixed_search : search;
+  if (leave_out_mixed) {
+    say("chain: " + std::to_string(mixed_pixels) + " mixed pixels left out of the refinement");
+  }
   const std::vector<SurfaceSamples>& chain_samples = cad.chain;
-  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, search, chain_samples, refinement,
-                                      options.residuals, &result->T_world_base, &result->q,
-                                      &result->chain_refinement));
+  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, refine_scans, refine_search, chain_samples,
+                                      refinement, options.residuals, &result->T_world_base,
+                                      &result->q, &result->chain_refinement));
 
   // Coverings (jackets, covers) found at the estimate and left out, then
   // the chain refined again without them.
@@ -48,10 +61,10 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                   "(jackets, covers): refining without them",
                   result->coverings.covered, result->coverings.matched);
     say(line);
-    CorrespondenceSearch masked_search(&scans, weights, covered);
-    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, &masked_search, chain_samples, refinement,
-                                        options.residuals, &result->T_world_base, &result->q,
-                                        &result->chain_refinement));
+    CorrespondenceSearch masked_search(&refine_scans, weights, covered);
+    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, refine_scans, &masked_search, chain_samples,
+                                        refinement, options.residuals, &result->T_world_base,
+                                        &result->q, &result->chain_refinement));
   }
   result->timings.refine = Since(start);
   if (refinement.refine) {

@@ -52,7 +52,9 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
 // The whole chain refined at once (options.refinement), or its covariance
 // alone, from result->T_world_base and result->q, in place; then, for
 // options.refinement.coverings.rounds, refined again without the coverings
-// found at the estimate. weights: the search's (nullptr: uniform).
+// found at the estimate, on `scans` without their mixed pixels
+// (FitOptions::refine_without_mixed_pixels; the coverings are found on
+// `scans`). weights: the search's (nullptr: uniform).
 // *covered: the last round's coverings (empty without rounds).
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                         CorrespondenceSearch* search, const CellWeights* weights,
