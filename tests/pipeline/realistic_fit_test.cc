@@ -137,6 +137,31 @@ void CompareStations(const std::vector<Pose>& written, const std::vector<Pose>& 
 #define EDGEFIT_SKIP_UNDER_SANITIZERS()
 #endif
 
+// The error of the prismatic joint (the gun's jaw: see README, known
+// limits), the mean and the largest of the revolute ones (the balancer
+// counts as revolute).
+struct JointErrorSummary {
+  double jaw = 0.0;
+  double revolute_mean = 0.0;
+  double revolute_max = 0.0;
+};
+
+JointErrorSummary Summarize(const FitErrors& errors) {
+  JointErrorSummary summary;
+  int revolute = 0;
+  for (const JointError& e : errors.joints) {
+    if (e.prismatic) {
+      summary.jaw = e.error;
+      continue;
+    }
+    summary.revolute_mean += e.error;
+    summary.revolute_max = std::max(summary.revolute_max, e.error);
+    ++revolute;
+  }
+  summary.revolute_mean /= revolute;
+  return summary;
+}
+
 TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
   EDGEFIT_SKIP_UNDER_SANITIZERS();
   const RealisticScene& s = GetScene();
@@ -146,19 +171,11 @@ TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
       s.scan.scans.TotalValid(), s.errors.base_translation * 1e3, s.errors.base_rotation / kDeg,
       s.errors.base_translation_survey * 1e3, s.errors.base_rotation_survey / kDeg,
       s.fit.timings.total, s.fit.ok ? "ok" : s.fit.message.c_str());
-  double sum = 0.0, max = 0.0, jaw = 0.0;
-  int revolute = 0;
   for (const JointError& e : s.errors.joints) {
     std::printf("  %-24s error %.4f %s\n", e.name.c_str(),
                 e.prismatic ? e.error * 1e3 : e.error / kDeg, e.prismatic ? "mm" : "deg");
-    if (e.prismatic) {  // the gun's jaw: see README, known limits
-      jaw = e.error;
-      continue;
-    }
-    sum += e.error;
-    max = std::max(max, e.error);
-    ++revolute;
   }
+  const JointErrorSummary errors = Summarize(s.errors);
   // Measured: revolute mean 0.022 deg, largest 0.053 deg (joint_6), base
   // 0.64 mm off the truth, 0.09 mm off where the survey puts it (the
   // stations' mean residual is the world frame's), the gun's jaw 0.24 mm.
@@ -167,30 +184,14 @@ TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
   // 0.092 deg; the balancer counts as revolute). The jaw was 51 mm off,
   // reported ambiguous, while coverings could be found on the sliding
   // electrode: found at the first pass's wrong jaw, they hid its far end.
-  EXPECT_LT(sum / revolute, 0.05 * kDeg);
-  EXPECT_LT(max, 0.15 * kDeg);
+  EXPECT_LT(errors.revolute_mean, 0.05 * kDeg);
+  EXPECT_LT(errors.revolute_max, 0.15 * kDeg);
   EXPECT_LT(s.errors.base_translation_survey, 0.0005);
-  EXPECT_LT(jaw, 0.0005);
+  EXPECT_LT(errors.jaw, 0.0005);
   for (const BodyQuality& b : s.fit.bodies) EXPECT_TRUE(b.ok) << b.link << ": " << s.fit.message;
   for (const BodyQuality& b : s.fit.bodies) {
     EXPECT_FALSE(b.better_elsewhere) << b.link << ": the final basin check fired on a good fit";
   }
-}
-
-// The error of the prismatic joint (the gun's jaw) and the mean of the
-// revolute ones.
-void JawAndRevoluteMean(const FitErrors& errors, double* jaw, double* revolute_mean) {
-  double sum = 0.0;
-  int revolute = 0;
-  for (const JointError& e : errors.joints) {
-    if (e.prismatic) {
-      *jaw = e.error;
-    } else {
-      sum += e.error;
-      ++revolute;
-    }
-  }
-  *revolute_mean = sum / revolute;
 }
 
 // The whole-chain refinement without the mixed pixels (the default): the
@@ -199,15 +200,15 @@ void JawAndRevoluteMean(const FitErrors& errors, double* jaw, double* revolute_m
 // other joints stay.
 TEST(RealisticFitTest, MixedPixelsLeftOutOfTheRefinementBringTheJawCloser) {
   EDGEFIT_SKIP_UNDER_SANITIZERS();
-  double jaw = 0.0, mean = 0.0, jaw_kept = 0.0, mean_kept = 0.0;
-  JawAndRevoluteMean(GetScene().errors, &jaw, &mean);
-  JawAndRevoluteMean(GetSceneRefinedWithMixedPixels().errors, &jaw_kept, &mean_kept);
+  const JointErrorSummary left_out = Summarize(GetScene().errors);
+  const JointErrorSummary kept = Summarize(GetSceneRefinedWithMixedPixels().errors);
   std::printf("  jaw %.4f mm, revolute mean %.4f deg; mixed pixels kept: %.4f mm, %.4f deg\n",
-              1e3 * jaw, mean / kDeg, 1e3 * jaw_kept, mean_kept / kDeg);
+              1e3 * left_out.jaw, left_out.revolute_mean / kDeg, 1e3 * kept.jaw,
+              kept.revolute_mean / kDeg);
   // Measured: jaw 0.243 against 0.455 mm, revolute mean 0.0222 against
   // 0.0207 deg.
-  EXPECT_LT(jaw, 0.75 * jaw_kept);
-  EXPECT_LT(mean, mean_kept + 0.005 * kDeg);
+  EXPECT_LT(left_out.jaw, 0.75 * kept.jaw);
+  EXPECT_LT(left_out.revolute_mean, kept.revolute_mean + 0.005 * kDeg);
 }
 
 // Registered to the model at its true pose (exactly the CAD here), the
