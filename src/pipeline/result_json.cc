@@ -227,6 +227,15 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"lambda", options.residuals.lambda},
             {"parameterization", JointParameterizationName(options.residuals.parameterization)},
             {"refine_chain", refined},
+            {"visibility_tolerance_m", options.refinement.chain.visibility_tolerance},
+            {"remove_mixed_pixels", options.remove_mixed_pixels},
+            {"refine_without_mixed_pixels",
+             options.refine_without_mixed_pixels && !options.remove_mixed_pixels},
+            {"mixed_pixels",
+             {{"tolerance_m", options.mixed_pixels.tolerance},
+              {"tolerance_per_spacing", options.mixed_pixels.tolerance_per_spacing},
+              {"min_lines", options.mixed_pixels.min_lines},
+              {"neighbour_lines", options.mixed_pixels.neighbour_lines}}},
             {"seed", options.seed}}},
           {"threads", omp_get_max_threads()}};
 }

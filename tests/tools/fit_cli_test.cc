@@ -24,7 +24,8 @@ TEST_F(CliTest, FitWritesTheResultContract) {
       Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
           " --out=" + Path("result.json") + " --out_joint_states=" + Path("j.yaml") +
           " --out_urdf=" + Path("fitted.urdf") + " --out_ply=" + Path("model.ply") +
-          " --out_background=" + Path("background.ptx") + " --refine_chain");
+          " --out_background=" + Path("background.ptx") + " --refine_chain" +
+          " --norefine_without_mixed_pixels --mixed_pixel_neighbour_lines=0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
   EXPECT_EQ(result["kind"], "articulated");
@@ -50,6 +51,14 @@ TEST_F(CliTest, FitWritesTheResultContract) {
                 result["timing_s"]["refine"].get<double>());
   EXPECT_TRUE(result["quality"]["ok"].get<bool>()) << result["quality"].dump();
   EXPECT_EQ(result["mixed_pixels_removed"].get<size_t>(), 0u);  // not asked for
+  // The options as given, defaults included.
+  const nlohmann::json& options = result["options"];
+  EXPECT_EQ(options["weighting"], "uniform");
+  EXPECT_DOUBLE_EQ(options["visibility_tolerance_m"].get<double>(), 0.002);
+  EXPECT_FALSE(options["remove_mixed_pixels"].get<bool>());
+  EXPECT_FALSE(options["refine_without_mixed_pixels"].get<bool>());
+  EXPECT_EQ(options["mixed_pixels"]["neighbour_lines"].get<int>(), 0);
+  EXPECT_EQ(options["mixed_pixels"]["min_lines"].get<int>(), 3);
   EXPECT_TRUE(result["quality"]["per_link"].contains("link_2"));
   // The arm scanned at its zero posture: joints within 0.1 degrees.
   EXPECT_LT(result["errors"]["joints"]["joint_1"].get<double>(), 0.1 * M_PI / 180.0);
