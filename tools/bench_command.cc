@@ -386,6 +386,8 @@ Command BenchCommand() {
        "station_max_covered_share",
        "covering_rounds",
        "visibility_tolerance_mm",
+       "cad_deviation_mm",
+       "cad_deviation_patch_mm",
        "remove_mixed_pixels",
        "refine_without_mixed_pixels",
        "mixed_pixel_tolerance_mm",

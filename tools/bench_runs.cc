@@ -47,9 +47,16 @@ nlohmann::json RunJson(const Run& run) {
   nlohmann::json joints = nlohmann::json::object(), prismatic = nlohmann::json::array(),
                  unobservable = nlohmann::json::object(), verdicts = nlohmann::json::object();
   nlohmann::json names = nlohmann::json::array();
+  nlohmann::json stds = nlohmann::json::object(), residual_stds = nlohmann::json::object();
+  const ChainRefinementSummary& chain = run.result.chain;
   for (const JointError& e : run.result.errors.joints) {
     if (!e.independent) continue;
     names.push_back(e.name);
+    const size_t j = static_cast<size_t>(e.joint);
+    if (j < chain.joint_std.size() && std::isfinite(chain.joint_std[j])) {
+      stds[e.name] = chain.joint_std[j];
+      residual_stds[e.name] = chain.joint_std_residuals[j];
+    }
     (e.unobservable ? unobservable : joints)[e.name] = e.error;
     if (e.prismatic) prismatic.push_back(e.name);
   }
@@ -79,6 +86,8 @@ nlohmann::json RunJson(const Run& run) {
           {"joint_errors", joints},  // observable independent joints [rad] or [m]
           {"unobservable_joint_errors", unobservable},  // reported by convention
           {"joint_verdicts", verdicts},
+          {"joint_std", stds},  // the fit's standard deviations, where computed
+          {"joint_std_residuals", residual_stds},  // their residuals' part alone
           {"prismatic_joints", prismatic},
           {"base_translation_m", run.result.errors.base_translation},
           {"base_rotation_rad", run.result.errors.base_rotation},

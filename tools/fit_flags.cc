@@ -43,6 +43,12 @@ DEFINE_double(visibility_tolerance_mm, 2.0,
               "The whole-chain refinement counts a CAD sample as seen when a scan's range at its "
               "cell is at most this much nearer than the sample [mm]: wider lets in samples just "
               "behind a nearer surface, which pull their link toward it.");
+DEFINE_double(cad_deviation_mm, 0.5,
+              "How far the real surfaces are off their CAD [mm], a standard deviation per patch "
+              "of --cad_deviation_patch_mm: part of joint_std and base_std (castings, welds, "
+              "paint); 0: the residuals alone (a lower bound).");
+DEFINE_double(cad_deviation_patch_mm, 200.0,
+              "The size of a patch of CAD surface that is off by one offset [mm].");
 DEFINE_bool(remove_mixed_pixels, false,
             "Remove mixed pixels (a range between a foreground edge and the surface behind it) "
             "from the scans before the edges and the fit.");
@@ -85,6 +91,8 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->stations.max_covered_share = FLAGS_station_max_covered_share;
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
   options->refinement.chain.visibility_tolerance = FLAGS_visibility_tolerance_mm * 1e-3;
+  options->refinement.chain.cad_deviation = FLAGS_cad_deviation_mm * 1e-3;
+  options->refinement.chain.cad_deviation_patch = FLAGS_cad_deviation_patch_mm * 1e-3;
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
   options->refine_without_mixed_pixels = FLAGS_refine_without_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
@@ -113,7 +121,8 @@ std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own) {
   for (const char* flag : {"weighting", "w_high", "loss", "loss_scale_mm", "lambda",
                            "parameterization", "refine_chain", "align_stations",
                            "station_rounds", "station_max_covered_share", "covering_rounds",
-                           "visibility_tolerance_mm", "remove_mixed_pixels",
+                           "visibility_tolerance_mm", "cad_deviation_mm",
+                           "cad_deviation_patch_mm", "remove_mixed_pixels",
                            "refine_without_mixed_pixels", "mixed_pixel_tolerance_mm",
                            "mixed_pixel_lines", "mixed_pixel_neighbour_lines"}) {
     own.emplace_back(flag);

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <memory>
 
 #include "costs/chain_point_cost.h"
@@ -31,6 +32,12 @@ bool ChainRefinementOptions::IsValid(std::string* error) const {
   if (!icp.IsValid(error)) return false;
   if (!(visibility_tolerance > 0.0)) {
     if (error != nullptr) *error = "chain refinement: visibility_tolerance must be positive";
+    return false;
+  }
+  if (!(cad_deviation >= 0.0) || !(cad_deviation_patch > 0.0)) {
+    if (error != nullptr) {
+      *error = "chain refinement: cad_deviation must be >= 0 and cad_deviation_patch positive";
+    }
     return false;
   }
   if (icp.point_to_plane && icp.plane_normals != WeightedIcpOptions::PlaneNormals::kModel) {
@@ -104,7 +111,7 @@ struct ChainProblem {
                const std::vector<double>& q_full, const ScanSet& scans, const PosedSamples& posed,
                const std::vector<Correspondence>& correspondences,
                bool point_to_plane, size_t batch,
-               ceres::LossFunction* loss)
+               ceres::LossFunction* loss, double patch_size = 0.0)
       : q_independent(std::max<size_t>(model.IndependentJoints().size(), 1), 0.0),
         kinematics(&model, T_world_base, q_full, delta_base, q_independent.data()),
         problem(ProblemOptions(&kinematics)) {
@@ -141,8 +148,25 @@ struct ChainProblem {
       if (plane) point.n_world = posed.n_world[k];
       point.w_edge = static_cast<double>(m.weight);
       points.push_back(point);
+      if (patch_size > 0.0) AddRowPatch(link, plane, point, patch_size);
     }
     flush();
+  }
+  // Per residual row (the problem's order): the CAD surface patch of its
+  // sample (-1: a point-to-point row, no normal) and the row's change per
+  // unit displacement of that patch along the world's axes.
+  void AddRowPatch(int link, bool plane, const ChainPoint& point, double patch_size) {
+    if (!plane) {
+      row_patch.insert(row_patch.end(), 3, {-1, Eigen::Vector3d::Zero()});
+      return;
+    }
+    std::array<int64_t, 4> key = {link, 0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+      key[static_cast<size_t>(a) + 1] = static_cast<int64_t>(std::floor(point.p_link[a] / patch_size));
+    }
+    const auto inserted = patch_ids.emplace(key, static_cast<int>(patch_ids.size()));
+    row_patch.emplace_back(inserted.first->second,
+                           std::sqrt(point.w_edge) * point.n_world.normalized());
   }
   bool has_joints() const { return !kinematics.independent_joints().empty(); }
 
@@ -151,6 +175,8 @@ struct ChainProblem {
   std::vector<double> q_independent;  // at least one entry
   ChainKinematics kinematics;         // the problem's evaluation callback
   ceres::Problem problem;
+  std::map<std::array<int64_t, 4>, int> patch_ids;  // (link, cube) -> patch
+  std::vector<std::pair<int, Eigen::Vector3d>> row_patch;  // with patch_size > 0
 };
 
 // Joint limits as bounds of the q block.
@@ -181,8 +207,10 @@ double MaxDisplacement(const std::vector<Eigen::AlignedBox3d>& boxes_link,
 }
 
 // The standard deviations of *summary from the covariance of the problem
-// at its parameters, scaled by the residual variance (cost: its Ceres cost).
-void Covariance(double cost, ChainProblem* chain, ChainRefinementSummary* summary) {
+// at its parameters, scaled by the residual variance (cost: its Ceres cost),
+// plus the CAD's deviation (cad_deviation [m] per patch; chain_refinement.h).
+void Covariance(double cost, double cad_deviation, ChainProblem* chain,
+                ChainRefinementSummary* summary) {
   const std::vector<int>& independent = chain->kinematics.independent_joints();
   const size_t parameters = 6 + independent.size();
   const size_t residuals = static_cast<size_t>(chain->problem.NumResiduals());
@@ -207,9 +235,28 @@ void Covariance(double cost, ChainProblem* chain, ChainRefinementSummary* summar
       }
     }
   }
-  const Eigen::VectorXd eigenvalues =
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(JtJ, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(JtJ);
+  const Eigen::VectorXd& eigenvalues = eigen.eigenvalues();
   if (!(eigenvalues.minCoeff() > 1e-12 * eigenvalues.maxCoeff())) return;
+  // The CAD's part: sigma_cad^2 H^-1 (sum_c,axis g g^T) H^-1.
+  Eigen::MatrixXd cad = Eigen::MatrixXd::Zero(jacobian.num_cols, jacobian.num_cols);
+  if (cad_deviation > 0.0 && chain->row_patch.size() == static_cast<size_t>(jacobian.num_rows)) {
+    Eigen::MatrixXd g = Eigen::MatrixXd::Zero(jacobian.num_cols, 3 * chain->patch_ids.size());
+    for (int row = 0; row < jacobian.num_rows; ++row) {
+      const auto& [patch, coefficients] = chain->row_patch[static_cast<size_t>(row)];
+      if (patch < 0) continue;
+      for (int a = jacobian.rows[static_cast<size_t>(row)];
+           a < jacobian.rows[static_cast<size_t>(row) + 1]; ++a) {
+        g.block<1, 3>(jacobian.cols[static_cast<size_t>(a)], 3 * patch) +=
+            jacobian.values[static_cast<size_t>(a)] * coefficients.transpose();
+      }
+    }
+    const Eigen::MatrixXd H_inverse = eigen.eigenvectors() *
+                                      eigenvalues.cwiseInverse().asDiagonal() *
+                                      eigen.eigenvectors().transpose();
+    const Eigen::MatrixXd spread = H_inverse * g;
+    cad = cad_deviation * cad_deviation * spread * spread.transpose();
+  }
   ceres::Covariance::Options covariance_options;
   covariance_options.algorithm_type = ceres::DENSE_SVD;
   covariance_options.num_threads = 1;
@@ -222,16 +269,19 @@ void Covariance(double cost, ChainProblem* chain, ChainRefinementSummary* summar
   double base_covariance[36];
   covariance.GetCovarianceBlock(base, base, base_covariance);
   for (int i = 0; i < 3; ++i) {
-    summary->base_rotation_std[i] = std::sqrt(variance * base_covariance[i * 6 + i]);
-    summary->base_translation_std[i] = std::sqrt(variance * base_covariance[(i + 3) * 6 + i + 3]);
+    summary->base_rotation_std[i] = std::sqrt(variance * base_covariance[i * 6 + i] + cad(i, i));
+    summary->base_translation_std[i] =
+        std::sqrt(variance * base_covariance[(i + 3) * 6 + i + 3] + cad(i + 3, i + 3));
   }
   const size_t n = independent.size();
   if (n > 0) {
     std::vector<double> joint_covariance(n * n);
     covariance.GetCovarianceBlock(joints, joints, joint_covariance.data());
     for (size_t k = 0; k < n; ++k) {
-      summary->joint_std[static_cast<size_t>(independent[k])] =
-          std::sqrt(variance * joint_covariance[k * n + k]);
+      const size_t j = static_cast<size_t>(independent[k]);
+      const int column = 6 + static_cast<int>(k);
+      summary->joint_std_residuals[j] = std::sqrt(variance * joint_covariance[k * n + k]);
+      summary->joint_std[j] = std::sqrt(variance * joint_covariance[k * n + k] + cad(column, column));
     }
   }
   summary->covariance_ok = true;
@@ -270,6 +320,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
 
   *summary = ChainRefinementSummary();
   summary->joint_std.assign(model.joints().size(), NAN);
+  summary->joint_std_residuals.assign(model.joints().size(), NAN);
   const ScanVisibility visibility(&scans);
   Pose T_base = *T_world_base;
   std::vector<double> q_full = *q;
@@ -349,12 +400,12 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
                   std::min(options.visibility_tolerance, final_gate), &posed);
     search->Find(posed.q_world, crop_world, gated, &correspondences);
     ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, icp.point_to_plane,
-                       batch, loss.get());
+                       batch, loss.get(), options.cad_deviation_patch);
     summary->correspondences = correspondences.size();
     double cost = 0.0;
     chain.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
     if (!options.refine) summary->final_cost = cost;
-    Covariance(cost, &chain, summary);
+    Covariance(cost, options.cad_deviation, &chain, summary);
   }
 
   *T_world_base = T_base;

@@ -13,13 +13,23 @@
 // as the joints let them, mimic and loop-closure joints follow theirs, and
 // every joint stays within its limits (Ceres bounds).
 //
-// The covariance of x at the estimate (ceres::Covariance, dense SVD) scaled
-// by the residual variance s^2 = 2 cost / (residuals - parameters) gives the
-// standard deviations of the joints and the base. The residuals of
-// neighbouring samples are not independent (they share scan points and
-// the scanner's correlated noise), so these are lower bounds: they rank the
-// joints by how well the scan pins them rather than give confidence
-// intervals.
+// The standard deviations of the joints and the base come from two parts:
+//
+//   Cov(x) = s^2 H^-1 + sigma_cad^2 H^-1 (sum_c sum_a g_ca g_ca^T) H^-1,
+//
+// H = J^T J at the estimate, s^2 = 2 cost / (residuals - parameters) the
+// residual variance (ceres::Covariance, dense SVD, for the first part), and
+// g_ca = sum over the point-to-plane residuals i of patch c of n_i,a J_i
+// (a: the world's axes). The first part takes the residuals as independent.
+// The second is the CAD's own error: a real part is not its CAD (castings,
+// welds, paint), and that deviation is smooth, so a patch of the surface
+// (cad_deviation_patch, a cube in the link frame) is moved as a whole, by a
+// displacement of its own with standard deviation sigma_cad (cad_deviation)
+// along each axis; a sample's residual changes by n^T that displacement.
+// No amount of scan points averages it away: a part pinned by a few small
+// faces keeps their error (a gun's electrode along its slide, pinned by its
+// tip; seen from one side, the tip's cone turns a sideways displacement
+// into one along the slide).
 //
 // Deterministic: the correspondence search is, Ceres runs single-threaded.
 #ifndef EDGEFIT_SOLVERS_REFINEMENT_CHAIN_REFINEMENT_H_
@@ -62,6 +72,16 @@ struct ChainRefinementOptions {
   // Compute the standard deviations at the estimate returned (one more
   // correspondence search and a dense SVD of 6 + joints parameters).
   bool covariance = true;
+  // The CAD surfaces' deviation from the real ones [m], a standard
+  // deviation per axis and patch of cad_deviation_patch [m] (the
+  // covariance's second part above); 0: the residuals alone (a lower bound,
+  // right only for scans of the CAD itself). 0.5 mm: machined and
+  // sheet-metal parts are made to a millimetre or better, castings to one
+  // or two. The realistic sensor's as-built surfaces (0.5-2 mm largest
+  // displacement per link, 0.2-0.8 m wavelength) are displaced by 0.28 mm
+  // RMS per axis. The patch: the shortest wavelength of those surfaces.
+  double cad_deviation = 0.0005;
+  double cad_deviation_patch = 0.2;
 
   static WeightedIcpOptions DefaultIcp();
   bool IsValid(std::string* error) const;
@@ -79,6 +99,8 @@ struct ChainRefinementSummary {
   bool covariance_ok = false;
   double sigma = 0.0;             // residual standard deviation s [m]
   std::vector<double> joint_std;  // per joint, model order [rad] or [m]; NaN: not a parameter
+  // The part of joint_std the residuals alone give (s^2 H^-1): a lower bound.
+  std::vector<double> joint_std_residuals;
   Eigen::Vector3d base_rotation_std = Eigen::Vector3d::Constant(NAN);     // world axes [rad]
   Eigen::Vector3d base_translation_std = Eigen::Vector3d::Constant(NAN);  // world axes [m]
   double seconds = 0.0;

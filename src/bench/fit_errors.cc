@@ -81,6 +81,7 @@ Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& 
     }
     JointError e;
     e.name = joint.name;
+    e.joint = static_cast<int>(j);
     e.prismatic = joint.type == JointType::kPrismatic;
     e.independent = joint.IsIndependent();
     e.truth = it->second;

@@ -137,7 +137,8 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
   const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
   const Eigen::Vector3d xyz = fit.T_world_base.translation();
   json joints = json::object(), joint_types = json::object();
-  json joint_std = json::object();  // lower bounds (chain_refinement.h), null: not determined
+  json joint_std = json::object();  // chain_refinement.h; null: not determined
+  json joint_std_residuals = json::object();  // the residuals' part alone: lower bounds
   const ChainRefinementSummary& chain = fit.chain_refinement;
   for (size_t j = 0; j < model.joints().size(); ++j) {
     if (model.joints()[j].IsMoving()) {
@@ -147,10 +148,15 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
     if (model.joints()[j].IsIndependent()) {  // none when the fit stopped before the chain
       joint_std[model.joints()[j].name] =
           j < chain.joint_std.size() ? NumberOrNull(chain.joint_std[j]) : json(nullptr);
+      joint_std_residuals[model.joints()[j].name] =
+          j < chain.joint_std_residuals.size() ? NumberOrNull(chain.joint_std_residuals[j])
+                                               : json(nullptr);
     }
   }
   for (const BodyQuality& b : fit.bodies) {  // no spread for what no scan decides
-    if (b.verdict == JointVerdict::kUnobservable) joint_std[b.joint] = nullptr;
+    if (b.verdict != JointVerdict::kUnobservable) continue;
+    joint_std[b.joint] = nullptr;
+    joint_std_residuals[b.joint] = nullptr;
   }
   json base_std = {{"rotation_rad", json::array()}, {"xyz_m", json::array()}};
   for (int i = 0; i < 3; ++i) {
@@ -219,6 +225,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
               {"max_displacement_m", chain.max_displacement},
               {"correspondences", chain.correspondences},
               {"sigma_m", chain.sigma},
+              {"joint_std_residuals", joint_std_residuals},
               {"covariance_ok", chain.covariance_ok}}}}},
           {"options",
            {{"weighting", options.uniform_weights ? "uniform" : "edge"},
@@ -228,6 +235,8 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"parameterization", JointParameterizationName(options.residuals.parameterization)},
             {"refine_chain", refined},
             {"visibility_tolerance_m", options.refinement.chain.visibility_tolerance},
+            {"cad_deviation_m", options.refinement.chain.cad_deviation},
+            {"cad_deviation_patch_m", options.refinement.chain.cad_deviation_patch},
             {"remove_mixed_pixels", options.remove_mixed_pixels},
             {"refine_without_mixed_pixels",
              options.refine_without_mixed_pixels && !options.remove_mixed_pixels},

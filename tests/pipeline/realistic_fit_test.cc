@@ -194,6 +194,25 @@ TEST(RealisticFitTest, RecoversJointsThroughJacketsAndStationResiduals) {
   }
 }
 
+// joint_std holds the CAD's deviation from the real surfaces
+// (ChainRefinementOptions::cad_deviation): on a scan of as-built surfaces
+// every joint's error is within three of its standard deviations.
+TEST(RealisticFitTest, JointStdCoversTheErrorsOfAsBuiltSurfaces) {
+  EDGEFIT_SKIP_UNDER_SANITIZERS();
+  const RealisticScene& s = GetScene();
+  const ChainRefinementSummary& chain = s.fit.chain_refinement;
+  ASSERT_TRUE(chain.covariance_ok);
+  for (const JointError& e : s.errors.joints) {
+    if (!e.independent) continue;
+    const size_t j = static_cast<size_t>(e.joint);
+    const double scale = e.prismatic ? 1e3 : 1.0 / kDeg;
+    std::printf("  %-24s error %.4f, std %.4f (residuals alone %.4f) %s\n", e.name.c_str(),
+                e.error * scale, chain.joint_std[j] * scale, chain.joint_std_residuals[j] * scale,
+                e.prismatic ? "mm" : "deg");
+    EXPECT_LT(e.error, 3.0 * chain.joint_std[j]) << e.name;
+  }
+}
+
 // The whole-chain refinement without the mixed pixels (the default): the
 // jaw, pinned along its slide by the electrode's small tip faces, where the
 // beam's footprint leaves mixed pixels at the silhouette, comes closer; the

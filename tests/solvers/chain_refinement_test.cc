@@ -161,10 +161,11 @@ TEST(ChainRefinementTest, BringsBaseAndEveryJointBackTogether) {
       continue;
     }
     EXPECT_LT(std::abs(q[k] - s.q[k]), kJointBound) << name;
-    // The covariance: positive, and below the error the refinement removed
-    // (lower bounds: see chain_refinement.h).
-    EXPECT_GT(summary.joint_std[k], 0.0) << name;
-    EXPECT_LT(summary.joint_std[k], 0.05 * kDeg) << name;
+    // The residuals' part of the covariance: positive, and below the error
+    // the refinement removed; the CAD's deviation only adds to it.
+    EXPECT_GT(summary.joint_std_residuals[k], 0.0) << name;
+    EXPECT_LT(summary.joint_std_residuals[k], 0.05 * kDeg) << name;
+    EXPECT_GT(summary.joint_std[k], summary.joint_std_residuals[k]) << name;
   }
   // Dependent joints (the balancer) follow and carry no deviation of their own.
   for (size_t k = 0; k < q.size(); ++k) {
@@ -222,12 +223,21 @@ TEST(ChainRefinementTest, SamplesJustBehindANearerSurfaceDoNotPull) {
   EXPECT_LT(tight, wide);
 }
 
-TEST(ChainRefinementTest, VisibilityToleranceMustBePositive) {
+TEST(ChainRefinementTest, ToleranceAndCadDeviationMustBeInRange) {
   ChainRefinementOptions options;
   options.visibility_tolerance = 0.0;
   std::string error;
   EXPECT_FALSE(options.IsValid(&error));
   EXPECT_NE(error.find("visibility_tolerance"), std::string::npos);
+  options = ChainRefinementOptions();
+  options.cad_deviation = 0.0;  // the residuals alone
+  EXPECT_TRUE(options.IsValid(&error)) << error;
+  options.cad_deviation = -0.001;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("cad_deviation"), std::string::npos);
+  options = ChainRefinementOptions();
+  options.cad_deviation_patch = 0.0;
+  EXPECT_FALSE(options.IsValid(&error));
 }
 
 TEST(ChainRefinementTest, CovarianceAloneKeepsTheEstimate) {
@@ -241,6 +251,51 @@ TEST(ChainRefinementTest, CovarianceAloneKeepsTheEstimate) {
   for (size_t k = 0; k < q.size(); ++k) EXPECT_NEAR(q[k], s.q[k], 1e-9);
   EXPECT_TRUE(summary.covariance_ok);
   EXPECT_TRUE(std::isfinite(summary.base_translation_std.norm()));
+}
+
+// The CAD's part of the deviations (cad_deviation, chain_refinement.h):
+// quadratic in sigma_cad, absent at 0, and not averaged away by more
+// samples, while the residuals' part falls with their number.
+TEST(ChainRefinementTest, TheCadDeviationIsNotAveragedAwayByMoreSamples) {
+  const RobotScene& s = GetScene();
+  SamplingOptions dense;
+  dense.spacing = 0.004;
+  const std::vector<SurfaceSamples> dense_samples = SampleModelSurfaces(s.model, dense);
+  // The CAD's part of joint k's variance, and the residuals' std.
+  auto parts = [&](const std::vector<SurfaceSamples>& samples, double cad_deviation,
+                   std::vector<double>* cad, std::vector<double>* residuals) {
+    ChainRefinementOptions options = CovarianceOnly();
+    options.cad_deviation = cad_deviation;
+    Pose T_world_base = s.T_world_base;
+    std::vector<double> q = s.q;
+    ChainRefinementSummary summary;
+    ASSERT_TRUE(Refine(samples, options, &T_world_base, &q, &summary).ok());
+    ASSERT_TRUE(summary.covariance_ok);
+    cad->clear();
+    residuals->clear();
+    for (const int j : s.model.IndependentJoints()) {
+      const size_t k = static_cast<size_t>(j);
+      cad->push_back(summary.joint_std[k] * summary.joint_std[k] -
+                     summary.joint_std_residuals[k] * summary.joint_std_residuals[k]);
+      residuals->push_back(summary.joint_std_residuals[k]);
+    }
+  };
+  std::vector<double> cad0, res0, cad1, res1, cad2, res2, cad_dense, res_dense;
+  parts(s.samples, 0.0, &cad0, &res0);
+  parts(s.samples, 0.0005, &cad1, &res1);
+  parts(s.samples, 0.001, &cad2, &res2);
+  parts(dense_samples, 0.0005, &cad_dense, &res_dense);
+  for (size_t i = 0; i < cad0.size(); ++i) {
+    EXPECT_EQ(cad0[i], 0.0) << i;
+    EXPECT_EQ(res1[i], res0[i]) << i;
+    EXPECT_GT(cad1[i], 0.0) << i;
+    EXPECT_NEAR(cad2[i], 4.0 * cad1[i], 1e-9 * cad1[i]) << i;
+    // Four times the samples: the residuals' std about halves, the CAD's
+    // part stays (the same patches, each moved as a whole).
+    EXPECT_LT(res_dense[i], 0.75 * res1[i]) << i;
+    EXPECT_GT(std::sqrt(cad_dense[i]), 0.8 * std::sqrt(cad1[i])) << i;
+    EXPECT_LT(std::sqrt(cad_dense[i]), 1.25 * std::sqrt(cad1[i])) << i;
+  }
 }
 
 TEST(ChainRefinementTest, AJointNoSamplePinsHasNoDeviation) {

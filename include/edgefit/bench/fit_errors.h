@@ -18,6 +18,7 @@ namespace edgefit {
 
 struct JointError {
   std::string name;
+  int joint = -1;  // index in model.joints()
   bool prismatic = false;
   bool independent = true;  // false: mimic or loop-closure joint
   double truth = 0.0;       // [rad] or [m]
