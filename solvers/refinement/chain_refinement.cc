@@ -162,7 +162,8 @@ struct ChainProblem {
     }
     std::array<int64_t, 4> key = {link, 0, 0, 0};
     for (int a = 0; a < 3; ++a) {
-      key[static_cast<size_t>(a) + 1] = static_cast<int64_t>(std::floor(point.p_link[a] / patch_size));
+      key[static_cast<size_t>(a) + 1] =
+          static_cast<int64_t>(std::floor(point.p_link[a] / patch_size));
     }
     const auto inserted = patch_ids.emplace(key, static_cast<int>(patch_ids.size()));
     row_patch.emplace_back(inserted.first->second,
@@ -281,7 +282,8 @@ void Covariance(double cost, double cad_deviation, ChainProblem* chain,
       const size_t j = static_cast<size_t>(independent[k]);
       const int column = 6 + static_cast<int>(k);
       summary->joint_std_residuals[j] = std::sqrt(variance * joint_covariance[k * n + k]);
-      summary->joint_std[j] = std::sqrt(variance * joint_covariance[k * n + k] + cad(column, column));
+      summary->joint_std[j] =
+          std::sqrt(variance * joint_covariance[k * n + k] + cad(column, column));
     }
   }
   summary->covariance_ok = true;
