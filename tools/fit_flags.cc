@@ -117,8 +117,9 @@ Status CheckFitFlags() {
   return FitOptionsFromFlags(AssetKind::kArticulated, &options);
 }
 
-std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own) {
-  for (const char* flag : {"weighting", "w_high", "loss", "loss_scale_mm", "lambda",
+std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own, bool weighting) {
+  if (weighting) own.emplace_back("weighting");
+  for (const char* flag : {"w_high", "loss", "loss_scale_mm", "lambda",
                            "parameterization", "refine_chain", "align_stations",
                            "station_rounds", "station_max_covered_share", "covering_rounds",
                            "visibility_tolerance_mm", "cad_deviation_mm",

@@ -46,8 +46,9 @@ Status CheckFitFlags();
 Status RoiFromFlags(Eigen::AlignedBox3d* box, bool* given);
 
 // A command's own flags followed by the fit options' (--weighting ...
-// --mixed_pixel_neighbour_lines), which edgefit fit and cell both take.
-std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own);
+// --mixed_pixel_neighbour_lines), which edgefit fit, cell and bench take;
+// weighting false: without --weighting (the bench's --weightings sets it).
+std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own, bool weighting = true);
 
 }  // namespace edgefit::tools
 

@@ -10,12 +10,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <memory>
 
 #include "costs/chain_point_cost.h"
 #include "costs/robust_loss.h"
 #include "solvers/refinement/chain_kinematics.h"
+#include "solvers/refinement/surface_patches.h"
 #include "solvers/registration/scan_visibility.h"
 
 namespace edgefit {
@@ -105,13 +105,14 @@ ceres::Problem::Options ProblemOptions(ceres::EvaluationCallback* callback) {
 }
 
 // The problem of one iteration (or of the covariance): the parameters
-// about (T_world_base, q_full) and one residual block per correspondence.
+// about (T_world_base, q_full) and one residual block per correspondence;
+// `patches`, when given, gets the surface patch of every residual row.
 struct ChainProblem {
   ChainProblem(const KinematicModel& model, const Pose& T_world_base,
                const std::vector<double>& q_full, const ScanSet& scans, const PosedSamples& posed,
                const std::vector<Correspondence>& correspondences,
                bool point_to_plane, size_t batch,
-               ceres::LossFunction* loss, double patch_size = 0.0)
+               ceres::LossFunction* loss, SurfacePatches* patches = nullptr)
       : q_independent(std::max<size_t>(model.IndependentJoints().size(), 1), 0.0),
         kinematics(&model, T_world_base, q_full, delta_base, q_independent.data()),
         problem(ProblemOptions(&kinematics)) {
@@ -148,26 +149,12 @@ struct ChainProblem {
       if (plane) point.n_world = posed.n_world[k];
       point.w_edge = static_cast<double>(m.weight);
       points.push_back(point);
-      if (patch_size > 0.0) AddRowPatch(link, plane, point, patch_size);
+      if (patches != nullptr && plane) {
+        patches->AddPlaneRow(link, point.p_link, point.n_world, std::sqrt(point.w_edge));
+      }
+      if (patches != nullptr && !plane) patches->AddPointRows();
     }
     flush();
-  }
-  // Per residual row (the problem's order): the CAD surface patch of its
-  // sample (-1: a point-to-point row, no normal) and the row's change per
-  // unit displacement of that patch along the world's axes.
-  void AddRowPatch(int link, bool plane, const ChainPoint& point, double patch_size) {
-    if (!plane) {
-      row_patch.insert(row_patch.end(), 3, {-1, Eigen::Vector3d::Zero()});
-      return;
-    }
-    std::array<int64_t, 4> key = {link, 0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
-      key[static_cast<size_t>(a) + 1] =
-          static_cast<int64_t>(std::floor(point.p_link[a] / patch_size));
-    }
-    const auto inserted = patch_ids.emplace(key, static_cast<int>(patch_ids.size()));
-    row_patch.emplace_back(inserted.first->second,
-                           std::sqrt(point.w_edge) * point.n_world.normalized());
   }
   bool has_joints() const { return !kinematics.independent_joints().empty(); }
 
@@ -176,8 +163,6 @@ struct ChainProblem {
   std::vector<double> q_independent;  // at least one entry
   ChainKinematics kinematics;         // the problem's evaluation callback
   ceres::Problem problem;
-  std::map<std::array<int64_t, 4>, int> patch_ids;  // (link, cube) -> patch
-  std::vector<std::pair<int, Eigen::Vector3d>> row_patch;  // with patch_size > 0
 };
 
 // Joint limits as bounds of the q block.
@@ -210,8 +195,8 @@ double MaxDisplacement(const std::vector<Eigen::AlignedBox3d>& boxes_link,
 // The standard deviations of *summary from the covariance of the problem
 // at its parameters, scaled by the residual variance (cost: its Ceres cost),
 // plus the CAD's deviation (cad_deviation [m] per patch; chain_refinement.h).
-void Covariance(double cost, double cad_deviation, ChainProblem* chain,
-                ChainRefinementSummary* summary) {
+void Covariance(double cost, double cad_deviation, const SurfacePatches& patches,
+                ChainProblem* chain, ChainRefinementSummary* summary) {
   const std::vector<int>& independent = chain->kinematics.independent_joints();
   const size_t parameters = 6 + independent.size();
   const size_t residuals = static_cast<size_t>(chain->problem.NumResiduals());
@@ -239,25 +224,11 @@ void Covariance(double cost, double cad_deviation, ChainProblem* chain,
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(JtJ);
   const Eigen::VectorXd& eigenvalues = eigen.eigenvalues();
   if (!(eigenvalues.minCoeff() > 1e-12 * eigenvalues.maxCoeff())) return;
-  // The CAD's part: sigma_cad^2 H^-1 (sum_c,axis g g^T) H^-1.
-  Eigen::MatrixXd cad = Eigen::MatrixXd::Zero(jacobian.num_cols, jacobian.num_cols);
-  if (cad_deviation > 0.0 && chain->row_patch.size() == static_cast<size_t>(jacobian.num_rows)) {
-    Eigen::MatrixXd g = Eigen::MatrixXd::Zero(jacobian.num_cols, 3 * chain->patch_ids.size());
-    for (int row = 0; row < jacobian.num_rows; ++row) {
-      const auto& [patch, coefficients] = chain->row_patch[static_cast<size_t>(row)];
-      if (patch < 0) continue;
-      for (int a = jacobian.rows[static_cast<size_t>(row)];
-           a < jacobian.rows[static_cast<size_t>(row) + 1]; ++a) {
-        g.block<1, 3>(jacobian.cols[static_cast<size_t>(a)], 3 * patch) +=
-            jacobian.values[static_cast<size_t>(a)] * coefficients.transpose();
-      }
-    }
-    const Eigen::MatrixXd H_inverse = eigen.eigenvectors() *
-                                      eigenvalues.cwiseInverse().asDiagonal() *
-                                      eigen.eigenvectors().transpose();
-    const Eigen::MatrixXd spread = H_inverse * g;
-    cad = cad_deviation * cad_deviation * spread * spread.transpose();
-  }
+  const Eigen::MatrixXd cad = patches.Covariance(
+      jacobian,
+      eigen.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() *
+          eigen.eigenvectors().transpose(),
+      cad_deviation);
   ceres::Covariance::Options covariance_options;
   covariance_options.algorithm_type = ceres::DENSE_SVD;
   covariance_options.num_threads = 1;
@@ -401,13 +372,14 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
     SelectAndPose(link_samples, model.ForwardKinematics(q_full, T_base), visibility, icp.visibility,
                   std::min(options.visibility_tolerance, final_gate), &posed);
     search->Find(posed.q_world, crop_world, gated, &correspondences);
+    SurfacePatches patches(options.cad_deviation_patch);
     ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, icp.point_to_plane,
-                       batch, loss.get(), options.cad_deviation_patch);
+                       batch, loss.get(), &patches);
     summary->correspondences = correspondences.size();
     double cost = 0.0;
     chain.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
     if (!options.refine) summary->final_cost = cost;
-    Covariance(cost, options.cad_deviation, &chain, summary);
+    Covariance(cost, options.cad_deviation, patches, &chain, summary);
   }
 
   *T_world_base = T_base;

@@ -1,0 +1,40 @@
+#include "solvers/refinement/surface_patches.h"
+
+#include <glog/logging.h>
+
+#include <cmath>
+
+namespace edgefit {
+
+void SurfacePatches::AddPlaneRow(int link, const Eigen::Vector3d& p_link,
+                                 const Eigen::Vector3d& n_world, double scale) {
+  std::array<int64_t, 4> key = {link, 0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    key[static_cast<size_t>(a) + 1] = static_cast<int64_t>(std::floor(p_link[a] / size_));
+  }
+  const auto inserted = ids_.emplace(key, static_cast<int>(ids_.size()));
+  rows_.emplace_back(inserted.first->second, scale * n_world.normalized());
+}
+
+void SurfacePatches::AddPointRows() { rows_.insert(rows_.end(), 3, {-1, Eigen::Vector3d::Zero()}); }
+
+Eigen::MatrixXd SurfacePatches::Covariance(const ceres::CRSMatrix& jacobian,
+                                           const Eigen::MatrixXd& H_inverse,
+                                           double sigma_cad) const {
+  CHECK_EQ(rows_.size(), static_cast<size_t>(jacobian.num_rows));
+  const int columns = jacobian.num_cols;
+  if (sigma_cad == 0.0) return Eigen::MatrixXd::Zero(columns, columns);
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(columns, 3 * static_cast<Eigen::Index>(ids_.size()));
+  for (size_t row = 0; row < rows_.size(); ++row) {
+    const auto& [patch, normal] = rows_[row];
+    if (patch < 0) continue;
+    for (int k = jacobian.rows[row]; k < jacobian.rows[row + 1]; ++k) {
+      g.block<1, 3>(jacobian.cols[static_cast<size_t>(k)], 3 * patch) +=
+          jacobian.values[static_cast<size_t>(k)] * normal.transpose();
+    }
+  }
+  const Eigen::MatrixXd spread = H_inverse * g;
+  return sigma_cad * sigma_cad * spread * spread.transpose();
+}
+
+}  // namespace edgefit
