@@ -14,22 +14,14 @@
 // every joint stays within its limits (Ceres bounds).
 //
 // The standard deviations of the joints and the base come from two parts:
-//
-//   Cov(x) = s^2 H^-1 + sigma_cad^2 H^-1 (sum_c sum_a g_ca g_ca^T) H^-1,
-//
-// H = J^T J at the estimate, s^2 = 2 cost / (residuals - parameters) the
-// residual variance (ceres::Covariance, dense SVD, for the first part), and
-// g_ca = sum over the point-to-plane residuals i of patch c of n_i,a J_i
-// (a: the world's axes). The first part takes the residuals as independent.
-// The second is the CAD's own error: a real part is not its CAD (castings,
-// welds, paint), and that deviation is smooth, so a patch of the surface
-// (cad_deviation_patch, a cube in the link frame) is moved as a whole, by a
-// displacement of its own with standard deviation sigma_cad (cad_deviation)
-// along each axis; a sample's residual changes by n^T that displacement.
-// No amount of scan points averages it away: a part pinned by a few small
-// faces keeps their error (a gun's electrode along its slide, pinned by its
-// tip; seen from one side, the tip's cone turns a sideways displacement
-// into one along the slide).
+// the residuals' spread, s^2 H^-1 with H = J^T J at the estimate and
+// s^2 = 2 cost / (residuals - parameters) (ceres::Covariance, dense SVD),
+// which takes the residuals as independent; and the CAD's own error, each
+// patch of a link's surface displaced as a whole (surface_patches.h). No
+// amount of scan points averages the second away: a part pinned by a few
+// small faces keeps their error (a gun's electrode along its slide, pinned
+// by its tip; seen from one side, the tip's cone turns a sideways
+// displacement into one along the slide).
 //
 // Deterministic: the correspondence search is, Ceres runs single-threaded.
 #ifndef EDGEFIT_SOLVERS_REFINEMENT_CHAIN_REFINEMENT_H_
@@ -78,8 +70,9 @@ struct ChainRefinementOptions {
   // right only for scans of the CAD itself). 0.5 mm: machined and
   // sheet-metal parts are made to a millimetre or better, castings to one
   // or two. The realistic sensor's as-built surfaces (0.5-2 mm largest
-  // displacement per link, 0.2-0.8 m wavelength) are displaced by 0.28 mm
-  // RMS per axis. The patch: the shortest wavelength of those surfaces.
+  // displacement per link, 0.2-0.8 m wavelength) are off by 0.27 mm RMS
+  // along their normals (the bundled robot with its gun, 20 postures'
+  // fields). The patch: the shortest wavelength of those surfaces.
   double cad_deviation = 0.0005;
   double cad_deviation_patch = 0.2;
 
