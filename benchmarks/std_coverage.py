@@ -5,6 +5,9 @@ the joints' z = |error| / std with the whole `joint_std` and with its
 residuals' part alone (`joint_std_residuals`): the share within 1, 2 and 3
 std, the median and the largest z. For a Gaussian error with the right
 std: 68 / 95 / 99.7 %. Joints a fit called unobservable are left out.
+Runs that record `base_std` add the base: its error in the survey's frame
+by world axis against the std of that axis, rotation and translation (the
+residuals' part of base_std is not recorded).
 
     python3 benchmarks/std_coverage.py R.json [R2.json ...]
 """
@@ -30,6 +33,18 @@ def rows(paths):
                     kind = "prismatic" if joint in prismatic else "revolute"
                     by_asset.setdefault(key + (kind,), []).append(
                         (error / std, error / residual if residual else float("nan")))
+                base_std = run.get("base_std")
+                if not base_std:
+                    continue
+                for kind, errors, stds in (
+                        ("base rotation", run["base_survey_rotation_world_rad"],
+                         base_std["rotation_rad"]),
+                        ("base translation", run["base_survey_translation_world_m"],
+                         base_std["xyz_m"])):
+                    for error, std in zip(errors, stds):
+                        if std:
+                            by_asset.setdefault(key + (kind,), []).append(
+                                (abs(error) / std, float("nan")))
     return by_asset
 
 
@@ -47,8 +62,9 @@ def main(paths):
     for (asset, sensor, kind), pairs in sorted(rows(paths).items()):
         full = [p[0] for p in pairs]
         residual = [p[1] for p in pairs if p[1] == p[1]]
-        print("| %s | %s | %s | %d | %s | %s |" % (asset, sensor, kind, len(pairs),
-                                                    describe(full), describe(residual)))
+        print("| %s | %s | %s | %d | %s | %s |" % (
+            asset, sensor, kind, len(pairs), describe(full),
+            describe(residual) if residual else "- | - | -"))
 
 
 if __name__ == "__main__":

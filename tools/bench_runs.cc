@@ -43,6 +43,15 @@ std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& f
   return label.empty() ? "-" : label;
 }
 
+namespace {
+// [x, y, z], a non-finite value as null.
+nlohmann::json Vector3Json(const Eigen::Vector3d& v) {
+  nlohmann::json out = nlohmann::json::array();
+  for (int i = 0; i < 3; ++i) out.push_back(std::isfinite(v[i]) ? nlohmann::json(v[i]) : nullptr);
+  return out;
+}
+}  // namespace
+
 nlohmann::json RunJson(const Run& run) {
   nlohmann::json joints = nlohmann::json::object(), prismatic = nlohmann::json::array(),
                  unobservable = nlohmann::json::object(), verdicts = nlohmann::json::object();
@@ -62,6 +71,11 @@ nlohmann::json RunJson(const Run& run) {
   }
   for (const BodyQuality& b : run.result.bodies) {
     if (!b.joint.empty()) verdicts[b.joint] = JointVerdictName(b.verdict);
+  }
+  nlohmann::json base_std = nullptr;  // as result.json's base_std
+  if (chain.covariance_ok) {
+    base_std = {{"rotation_rad", Vector3Json(chain.base_rotation_std)},
+                {"xyz_m", Vector3Json(chain.base_translation_std)}};
   }
   const FitTimings& t = run.result.timings;
   return {{"asset", run.asset},
@@ -93,6 +107,12 @@ nlohmann::json RunJson(const Run& run) {
           {"base_rotation_rad", run.result.errors.base_rotation},
           {"base_survey_translation_m", run.result.errors.base_translation_survey},
           {"base_survey_rotation_rad", run.result.errors.base_rotation_survey},
+          // by world axis, to set against base_std
+          {"base_survey_rotation_world_rad",
+           Vector3Json(run.result.errors.base_rotation_survey_world)},
+          {"base_survey_translation_world_m",
+           Vector3Json(run.result.errors.base_translation_survey_world)},
+          {"base_std", base_std},
           {"tool_tip_link", run.result.errors.tool_tip_link},
           {"tool_tip_m", run.result.errors.tool_tip},
           {"covariance_ok", run.result.chain.covariance_ok},

@@ -266,6 +266,20 @@ TEST(SurveyFrameTest, IsTheStationsMeanResidual) {
   EXPECT_GT(errors.base_translation, 0.001);
   EXPECT_LT(errors.base_translation_survey, 1e-12);
   EXPECT_LT(errors.base_rotation_survey, 1e-9);
+
+  // Off that placement by a turn about the world's z and a shift: the
+  // errors by world axis are those, as the fit's base_std states them.
+  Pose T_world_base_fit = D * T_world_base;
+  T_world_base_fit.linear() =
+      Eigen::AngleAxisd(1e-4, Eigen::Vector3d::UnitZ()).matrix() * T_world_base_fit.linear();
+  T_world_base_fit.translation() += Eigen::Vector3d(0.001, -0.002, 0.003);
+  ASSERT_TRUE(CompareWithTruth(model, q, T_world_base_fit, NamedJointValues(model, q),
+                               T_world_base, D, &errors)
+                  .ok());
+  EXPECT_LT((errors.base_rotation_survey_world - Eigen::Vector3d(0.0, 0.0, 1e-4)).norm(), 1e-12);
+  EXPECT_LT((errors.base_translation_survey_world - Eigen::Vector3d(0.001, -0.002, 0.003)).norm(),
+            1e-12);
+  EXPECT_NEAR(errors.base_rotation_survey, 1e-4, 1e-12);
 }
 
 TEST(RealisticFitTest, StationsRegisteredToTheModelAgree) {

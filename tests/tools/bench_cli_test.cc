@@ -113,6 +113,15 @@ TEST_F(CliTest, BenchTwoStationsDoNotTurnTheBase) {
   EXPECT_TRUE(json[0]["ok"].get<bool>()) << json[0]["message"];
   EXPECT_LT(json[0]["base_rotation_rad"].get<double>(), 0.05 * M_PI / 180.0);
   EXPECT_GT(json[0]["timing_s"]["alternatives"].get<double>(), 0.0);
+  // The base's error by world axis, to set against its std.
+  double squares = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double component = json[0]["base_survey_rotation_world_rad"][i].get<double>();
+    squares += component * component;
+    EXPECT_GT(json[0]["base_std"]["rotation_rad"][i].get<double>(), 0.0) << i;
+    EXPECT_GT(json[0]["base_std"]["xyz_m"][i].get<double>(), 0.0) << i;
+  }
+  EXPECT_NEAR(std::sqrt(squares), json[0]["base_survey_rotation_rad"].get<double>(), 1e-12);
 }
 
 TEST_F(CliTest, BenchBadInput) {

@@ -4,6 +4,7 @@
 #ifndef EDGEFIT_BENCH_FIT_ERRORS_H_
 #define EDGEFIT_BENCH_FIT_ERRORS_H_
 
+#include <Eigen/Core>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,6 +40,10 @@ struct FitErrors {
   // same as above when the stations are exact.
   double base_translation_survey = 0.0;  // [m]
   double base_rotation_survey = 0.0;     // [rad]
+  // The same error by world axis, as the fit's base_std gives it: the
+  // rotation vector of R_fit R_truth^T [rad] and t_fit - t_truth [m].
+  Eigen::Vector3d base_rotation_survey_world = Eigen::Vector3d::Zero();
+  Eigen::Vector3d base_translation_survey_world = Eigen::Vector3d::Zero();
   // The tool tip (ToolTipLink): its origin's distance from where the
   // truth puts it [m], base and every joint error together.
   std::string tool_tip_link;
