@@ -178,27 +178,17 @@ int RunCell(const Command& command) {
     std::string scored = truth.empty() ? "" : "  (no truth asset within 0.5 m)";
     if (match >= 0) {
       taken[static_cast<size_t>(match)] = true;
-      const Truth& t = truth[static_cast<size_t>(match)].truth;
       FitErrors errors;
-      const Status status = CompareWithTruth(
-          l.model, instance.fit.q, instance.fit.T_world_base, t.joints, t.T_world_base,
-          SurveyFrame(t.T_world_scanners, t.sensor.T_world_scanners_written), &errors,
-          instance.fit.base_symmetry);
+      const Status status =
+          ScoreFit(l.model, instance.fit, truth[static_cast<size_t>(match)].truth, &errors);
       if (!status.ok()) return fail(status.WithContext(FLAGS_truth));
-      MarkUnobservableJoints(instance.fit.bodies, &errors);
       double worst = 0.0;
-      json e = json::object();
       for (const JointError& j : errors.joints) {
-        e[j.name] = j.error;
         if (!j.prismatic && j.independent && !j.unobservable)
           worst = std::max(worst, std::abs(j.error));
       }
-      result["errors"] = {{"truth_asset", truth[static_cast<size_t>(match)].name},
-                          {"joints", e},
-                          {"base_translation_m", errors.base_translation},
-                          {"base_rotation_rad", errors.base_rotation},
-                          {"base_survey_translation_m", errors.base_translation_survey},
-                          {"base_survey_rotation_rad", errors.base_rotation_survey}};
+      result["errors"] = FitErrorsJson(errors);
+      result["errors"]["truth_asset"] = truth[static_cast<size_t>(match)].name;
       summary["truth_asset"] = truth[static_cast<size_t>(match)].name;
       summary["worst_revolute_error_deg"] = worst * 180.0 / M_PI;
       summary["base_error_mm"] = errors.base_translation * 1e3;

@@ -167,28 +167,16 @@ int RunFit(const Command& command) {
       truth.size() == 1 ? 0 : MatchTruthAsset(truth, {}, model, fit.T_world_base);
   FitErrors errors;
   if (scored_asset >= 0) {
-    const Truth& t = truth[static_cast<size_t>(scored_asset)].truth;
-    const Status status = CompareWithTruth(
-        model, fit.q, fit.T_world_base, t.joints, t.T_world_base,
-        SurveyFrame(t.T_world_scanners, t.sensor.T_world_scanners_written), &errors,
-        fit.base_symmetry);
+    const Status status =
+        ScoreFit(model, fit, truth[static_cast<size_t>(scored_asset)].truth, &errors);
     if (!status.ok()) return BadInput(command, status.WithContext(FLAGS_truth));
-    MarkUnobservableJoints(fit.bodies, &errors);
   }
 
   json result = FitResultJson(model, kind, options, fit);
   result["timing_s"]["load"] = load_seconds;
   result["inputs"] = FitInputsJson(specs, has_roi ? &roi : nullptr);
   if (scored_asset >= 0) {
-    json e = json::object();
-    for (const JointError& j : errors.joints) e[j.name] = j.error;
-    result["errors"] = {{"joints", e},
-                        {"base_translation_m", errors.base_translation},
-                        {"base_rotation_rad", errors.base_rotation},
-                        {"base_survey_translation_m", errors.base_translation_survey},
-                        {"base_survey_rotation_rad", errors.base_rotation_survey},
-                        {"tool_tip_link", errors.tool_tip_link},
-                        {"tool_tip_m", errors.tool_tip}};
+    result["errors"] = FitErrorsJson(errors);
     if (truth.size() > 1) {
       result["errors"]["truth_asset"] = truth[static_cast<size_t>(scored_asset)].name;
     }

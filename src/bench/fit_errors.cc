@@ -141,4 +141,26 @@ int MatchTruthAsset(const std::vector<CellTruthAsset>& truth, const std::vector<
   return best;
 }
 
+Status ScoreFit(const KinematicModel& model, const FitResult& fit, const Truth& truth,
+                FitErrors* errors) {
+  EDGEFIT_RETURN_IF_ERROR(CompareWithTruth(
+      model, fit.q, fit.T_world_base, truth.joints, truth.T_world_base,
+      SurveyFrame(truth.T_world_scanners, truth.sensor.T_world_scanners_written), errors,
+      fit.base_symmetry));
+  MarkUnobservableJoints(fit.bodies, errors);
+  return Status::Ok();
+}
+
+nlohmann::json FitErrorsJson(const FitErrors& errors) {
+  nlohmann::json joints = nlohmann::json::object();
+  for (const JointError& j : errors.joints) joints[j.name] = j.error;
+  return {{"joints", joints},
+          {"base_translation_m", errors.base_translation},
+          {"base_rotation_rad", errors.base_rotation},
+          {"base_survey_translation_m", errors.base_translation_survey},
+          {"base_survey_rotation_rad", errors.base_rotation_survey},
+          {"tool_tip_link", errors.tool_tip_link},
+          {"tool_tip_m", errors.tool_tip}};
+}
+
 }  // namespace edgefit

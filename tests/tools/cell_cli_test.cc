@@ -74,6 +74,11 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
     const nlohmann::json result =
         nlohmann::json::parse(Slurp(instance["result"].get<std::string>()));
     EXPECT_TRUE(result.contains("joint_status"));
+    // Its errors as edgefit fit --truth writes them, with the truth asset.
+    EXPECT_EQ(result["errors"]["truth_asset"], instance["truth_asset"]);
+    EXPECT_NEAR(result["errors"]["base_translation_m"].get<double>() * 1e3,
+                instance["base_error_mm"].get<double>(), 1e-9);
+    EXPECT_LT(result["errors"]["tool_tip_m"].get<double>(), 0.002) << instance["id"];
   }
   const RunResult rest = Run("info --json --scan=" + Path("rest.e57"));
   ASSERT_EQ(rest.exit_code, 0) << rest.err;

@@ -5,6 +5,7 @@
 #define EDGEFIT_BENCH_FIT_ERRORS_H_
 
 #include <Eigen/Core>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -90,6 +91,17 @@ int MatchTruthAsset(const std::vector<CellTruthAsset>& truth, const std::vector<
 
 // Sets JointError::unobservable from the fit's verdicts (FitResult::bodies).
 void MarkUnobservableJoints(const std::vector<BodyQuality>& bodies, FitErrors* errors);
+
+// A fit scored against its truth asset (edgefit fit and edgefit cell with
+// --truth): CompareWithTruth in the survey's frame of the truth's stations,
+// then MarkUnobservableJoints.
+Status ScoreFit(const KinematicModel& model, const FitResult& fit, const Truth& truth,
+                FitErrors* errors);
+
+// result.json's `errors` (docs/result_json.md): `joints` (name -> error),
+// the base's errors against the truth and in the survey's frame, the tool
+// tip's.
+nlohmann::json FitErrorsJson(const FitErrors& errors);
 
 }  // namespace edgefit
 
