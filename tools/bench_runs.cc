@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "edgefit/core/format.h"
+#include "edgefit/pipeline/result_json.h"
 #include "fit_flags.h"
 
 namespace edgefit::tools {
@@ -77,7 +78,8 @@ nlohmann::json RunJson(const Run& run) {
     base_std = {{"rotation_rad", Vector3Json(chain.base_rotation_std)},
                 {"xyz_m", Vector3Json(chain.base_translation_std)}};
   }
-  const FitTimings& t = run.result.timings;
+  nlohmann::json timing = FitTimingsJson(run.result.timings);  // the fit's, without load
+  timing["total"] = run.result.timings.total;
   return {{"asset", run.asset},
           {"posture", run.posture},
           {"accessories", run.scan.accessories},
@@ -116,14 +118,7 @@ nlohmann::json RunJson(const Run& run) {
           {"tool_tip_link", run.result.errors.tool_tip_link},
           {"tool_tip_m", run.result.errors.tool_tip},
           {"covariance_ok", run.result.chain.covariance_ok},
-          {"timing_s",
-           {{"edges", t.edges},
-            {"base_rough", t.base_rough},
-            {"base_precise", t.base_precise},
-            {"chain", t.chain},
-            {"refine", t.refine},
-            {"alternatives", t.alternatives},
-            {"total", t.total}}},
+          {"timing_s", timing},
           {"ok", run.result.ok},
           {"message", run.result.message},
           {"failed", run.result.failed}};

@@ -200,14 +200,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"rounds", fit.stations.rounds},
             {"links_left_out", left_out},
             {"corrections", stations}}},
-          {"timing_s",
-           {{"edges", fit.timings.edges},
-            {"stations", fit.timings.stations},
-            {"base_rough", fit.timings.base_rough},
-            {"base_precise", fit.timings.base_precise},
-            {"chain", fit.timings.chain},
-            {"refine", fit.timings.refine},
-            {"alternatives", fit.timings.alternatives}}},
+          {"timing_s", FitTimingsJson(fit.timings)},
           {"mixed_pixels_removed", fit.mixed_pixels},
           {"coverings",
            {{"matched", coverings.matched},
@@ -247,6 +240,16 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
               {"neighbour_lines", options.mixed_pixels.neighbour_lines}}},
             {"seed", options.seed}}},
           {"threads", omp_get_max_threads()}};
+}
+
+json FitTimingsJson(const FitTimings& timings) {
+  return {{"edges", timings.edges},
+          {"stations", timings.stations},
+          {"base_rough", timings.base_rough},
+          {"base_precise", timings.base_precise},
+          {"chain", timings.chain},
+          {"refine", timings.refine},
+          {"alternatives", timings.alternatives}};
 }
 
 }  // namespace edgefit

@@ -19,6 +19,10 @@ namespace edgefit {
 nlohmann::json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions& options,
                              const FitResult& fit);
 
+// The stages' seconds, as result.json's timing_s holds them: edges,
+// stations, base_rough, base_precise, chain, refine, alternatives.
+nlohmann::json FitTimingsJson(const FitTimings& timings);
+
 }  // namespace edgefit
 
 #endif  // EDGEFIT_PIPELINE_RESULT_JSON_H_
