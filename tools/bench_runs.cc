@@ -45,12 +45,7 @@ std::string Label(const Axes& axes, const ScanSetting& scan, const FitSetting& f
 }
 
 namespace {
-// [x, y, z], a non-finite value as null.
-nlohmann::json Vector3Json(const Eigen::Vector3d& v) {
-  nlohmann::json out = nlohmann::json::array();
-  for (int i = 0; i < 3; ++i) out.push_back(std::isfinite(v[i]) ? nlohmann::json(v[i]) : nullptr);
-  return out;
-}
+nlohmann::json Vector3Json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 }  // namespace
 
 nlohmann::json RunJson(const Run& run) {
@@ -72,11 +67,6 @@ nlohmann::json RunJson(const Run& run) {
   }
   for (const BodyQuality& b : run.result.bodies) {
     if (!b.joint.empty()) verdicts[b.joint] = JointVerdictName(b.verdict);
-  }
-  nlohmann::json base_std = nullptr;  // as result.json's base_std
-  if (chain.covariance_ok) {
-    base_std = {{"rotation_rad", Vector3Json(chain.base_rotation_std)},
-                {"xyz_m", Vector3Json(chain.base_translation_std)}};
   }
   nlohmann::json timing = FitTimingsJson(run.result.timings);  // the fit's, without load
   timing["total"] = run.result.timings.total;
@@ -114,7 +104,7 @@ nlohmann::json RunJson(const Run& run) {
            Vector3Json(run.result.errors.base_rotation_survey_world)},
           {"base_survey_translation_world_m",
            Vector3Json(run.result.errors.base_translation_survey_world)},
-          {"base_std", base_std},
+          {"base_std", BaseStdJson(chain)},
           {"tool_tip_link", run.result.errors.tool_tip_link},
           {"tool_tip_m", run.result.errors.tool_tip},
           {"covariance_ok", run.result.chain.covariance_ok},

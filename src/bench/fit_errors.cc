@@ -105,10 +105,10 @@ Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& 
   const Pose delta = T_world_base_truth.inverse() * T_world_base_fit;
   errors->base_translation = delta.translation().norm();
   errors->base_rotation = Eigen::AngleAxisd(delta.linear()).angle();
-  const Pose delta_survey = (T_survey_world * T_world_base_truth).inverse() * T_world_base_fit;
+  const Pose T_world_base_survey = T_survey_world * T_world_base_truth;
+  const Pose delta_survey = T_world_base_survey.inverse() * T_world_base_fit;
   errors->base_translation_survey = delta_survey.translation().norm();
   errors->base_rotation_survey = Eigen::AngleAxisd(delta_survey.linear()).angle();
-  const Pose T_world_base_survey = T_survey_world * T_world_base_truth;
   const Eigen::AngleAxisd rotation_world(T_world_base_fit.linear() *
                                          T_world_base_survey.linear().transpose());
   errors->base_rotation_survey_world = rotation_world.angle() * rotation_world.axis();

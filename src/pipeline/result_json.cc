@@ -158,11 +158,6 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
     joint_std[b.joint] = nullptr;
     joint_std_residuals[b.joint] = nullptr;
   }
-  json base_std = {{"rotation_rad", json::array()}, {"xyz_m", json::array()}};
-  for (int i = 0; i < 3; ++i) {
-    base_std["rotation_rad"].push_back(NumberOrNull(chain.base_rotation_std[i]));
-    base_std["xyz_m"].push_back(NumberOrNull(chain.base_translation_std[i]));
-  }
   const bool refined = options.refinement.chain.refine;
   json covered_links = json::object();
   const CoveringSummary& coverings = fit.coverings;
@@ -194,7 +189,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
           {"joint_types", joint_types},
           {"joint_std", joint_std},
           {"joint_status", JointStatusJson(model, fit, joint_std)},
-          {"base_std", base_std},
+          {"base_std", BaseStdJson(chain)},
           {"stations",
            {{"aligned", !fit.stations.stations.empty()},
             {"rounds", fit.stations.rounds},
@@ -250,6 +245,15 @@ json FitTimingsJson(const FitTimings& timings) {
           {"chain", timings.chain},
           {"refine", timings.refine},
           {"alternatives", timings.alternatives}};
+}
+
+json BaseStdJson(const ChainRefinementSummary& chain) {
+  json base_std = {{"rotation_rad", json::array()}, {"xyz_m", json::array()}};
+  for (int i = 0; i < 3; ++i) {
+    base_std["rotation_rad"].push_back(NumberOrNull(chain.base_rotation_std[i]));
+    base_std["xyz_m"].push_back(NumberOrNull(chain.base_translation_std[i]));
+  }
+  return base_std;
 }
 
 }  // namespace edgefit

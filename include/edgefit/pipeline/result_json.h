@@ -19,6 +19,10 @@ namespace edgefit {
 nlohmann::json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions& options,
                              const FitResult& fit);
 
+// result.json's base_std: the base's standard deviations about and along
+// the world axes, `rotation_rad` and `xyz_m` (null where not computed).
+nlohmann::json BaseStdJson(const ChainRefinementSummary& chain);
+
 // The stages' seconds, as result.json's timing_s holds them: edges,
 // stations, base_rough, base_precise, chain, refine, alternatives.
 nlohmann::json FitTimingsJson(const FitTimings& timings);
