@@ -49,6 +49,10 @@ DEFINE_double(cad_deviation_mm, 0.5,
               "paint); 0: the residuals alone (a lower bound).");
 DEFINE_double(cad_deviation_patch_mm, 200.0,
               "The size of a patch of CAD surface that is off by one offset [mm].");
+DEFINE_double(incidence_cosine, 0.0,
+              "The whole-chain refinement weights each point by min(1, c / this), c the cosine "
+              "of its beam's incidence on the CAD surface: returns at grazing incidence count "
+              "less; 0: no such weights.");
 DEFINE_bool(remove_mixed_pixels, false,
             "Remove mixed pixels (a range between a foreground edge and the surface behind it) "
             "from the scans before the edges and the fit.");
@@ -93,6 +97,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->refinement.chain.visibility_tolerance = FLAGS_visibility_tolerance_mm * 1e-3;
   options->refinement.chain.cad_deviation = FLAGS_cad_deviation_mm * 1e-3;
   options->refinement.chain.cad_deviation_patch = FLAGS_cad_deviation_patch_mm * 1e-3;
+  options->refinement.chain.incidence_cosine = FLAGS_incidence_cosine;
   options->remove_mixed_pixels = FLAGS_remove_mixed_pixels;
   options->refine_without_mixed_pixels = FLAGS_refine_without_mixed_pixels;
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
@@ -123,7 +128,7 @@ std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own, bool w
                            "parameterization", "refine_chain", "align_stations",
                            "station_rounds", "station_max_covered_share", "covering_rounds",
                            "visibility_tolerance_mm", "cad_deviation_mm",
-                           "cad_deviation_patch_mm", "remove_mixed_pixels",
+                           "cad_deviation_patch_mm", "incidence_cosine", "remove_mixed_pixels",
                            "refine_without_mixed_pixels", "mixed_pixel_tolerance_mm",
                            "mixed_pixel_lines", "mixed_pixel_neighbour_lines"}) {
     own.emplace_back(flag);

@@ -34,6 +34,10 @@ bool ChainRefinementOptions::IsValid(std::string* error) const {
     if (error != nullptr) *error = "chain refinement: visibility_tolerance must be positive";
     return false;
   }
+  if (!(incidence_cosine >= 0.0 && incidence_cosine <= 1.0)) {
+    if (error != nullptr) *error = "chain refinement: incidence_cosine must be in [0, 1]";
+    return false;
+  }
   if (!(cad_deviation >= 0.0) || !(cad_deviation_patch > 0.0)) {
     if (error != nullptr) {
       *error = "chain refinement: cad_deviation must be >= 0 and cad_deviation_patch positive";
@@ -111,7 +115,7 @@ struct ChainProblem {
   ChainProblem(const KinematicModel& model, const Pose& T_world_base,
                const std::vector<double>& q_full, const ScanSet& scans, const PosedSamples& posed,
                const std::vector<Correspondence>& correspondences,
-               bool point_to_plane, size_t batch,
+               bool point_to_plane, double incidence_cosine, size_t batch,
                ceres::LossFunction* loss, SurfacePatches* patches = nullptr)
       : q_independent(std::max<size_t>(model.IndependentJoints().size(), 1), 0.0),
         kinematics(&model, T_world_base, q_full, delta_base, q_independent.data()),
@@ -144,10 +148,15 @@ struct ChainProblem {
       points_plane = plane;
       ChainPoint point;
       point.p_link = posed.p_link[k];
-      point.q_world =
-          scans.scans[static_cast<size_t>(m.scan)].PointWorld(static_cast<size_t>(m.cell));
+      const OrganizedScan& scan = scans.scans[static_cast<size_t>(m.scan)];
+      point.q_world = scan.PointWorld(static_cast<size_t>(m.cell));
       if (plane) point.n_world = posed.n_world[k];
       point.w_edge = static_cast<double>(m.weight);
+      if (plane && incidence_cosine > 0.0) {
+        const Eigen::Vector3d beam = point.q_world - scan.T_world_scanner().translation();
+        const double cosine = std::abs(point.n_world.dot(beam)) / std::max(beam.norm(), 1e-9);
+        point.w_edge *= std::clamp(cosine / incidence_cosine, 1.0 / 16.0, 1.0);
+      }
       points.push_back(point);
       if (patches != nullptr && plane) {
         patches->AddPlaneRow(link, point.p_link, point.n_world, std::sqrt(point.w_edge));
@@ -337,7 +346,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
       break;
     }
     ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, icp.point_to_plane,
-                       batch, loss.get());
+                       options.incidence_cosine, batch, loss.get());
     if (chain.has_joints()) {
       BoundJoints(model, chain.kinematics.independent_joints(), chain.q_independent.data(),
                   &chain.problem);
@@ -374,7 +383,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
     search->Find(posed.q_world, crop_world, gated, &correspondences);
     SurfacePatches patches(options.cad_deviation_patch);
     ChainProblem chain(model, T_base, q_full, scans, posed, correspondences, icp.point_to_plane,
-                       batch, loss.get(), &patches);
+                       options.incidence_cosine, batch, loss.get(), &patches);
     summary->correspondences = correspondences.size();
     double cost = 0.0;
     chain.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);

@@ -75,6 +75,14 @@ struct ChainRefinementOptions {
   // fields). The patch: the shortest wavelength of those surfaces.
   double cad_deviation = 0.0005;
   double cad_deviation_patch = 0.2;
+  // Weight each point-to-plane residual by min(1, c / incidence_cosine),
+  // c the cosine of the angle between the beam of its scan point and the
+  // CAD normal at its sample (the weight at least 1/16); 0: no such
+  // weights. A return at grazing incidence counts less: there the beam's
+  // footprint spreads over 1/c of its width, and where it meets an edge its
+  // range lies off the surface. (Range noise alone would not ask for this:
+  // it lies along the beam, and reaches a point-to-plane residual times c.)
+  double incidence_cosine = 0.0;
 
   static WeightedIcpOptions DefaultIcp();
   bool IsValid(std::string* error) const;

@@ -225,6 +225,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"visibility_tolerance_m", options.refinement.chain.visibility_tolerance},
             {"cad_deviation_m", options.refinement.chain.cad_deviation},
             {"cad_deviation_patch_m", options.refinement.chain.cad_deviation_patch},
+            {"incidence_cosine", options.refinement.chain.incidence_cosine},
             {"remove_mixed_pixels", options.remove_mixed_pixels},
             {"refine_without_mixed_pixels",
              options.refine_without_mixed_pixels && !options.remove_mixed_pixels},

@@ -41,8 +41,10 @@ struct RobotScene {
   std::vector<SurfaceSamples> samples;  // per link, 8 mm
 };
 
-// The scene scanned with range noise of this sigma [m].
-RobotScene* MakeScene(double noise_sigma) {
+// The scene scanned with range noise of this sigma [m] (at normal incidence
+// on a surface of the reference reflectance, growing with incidence when
+// incidence_noise: range_noise.h).
+RobotScene* MakeScene(double noise_sigma, bool incidence_noise = false) {
   auto* out = new RobotScene;
   CHECK(LoadKinematicModel(std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/robot.urdf",
                            ModelLoadOptions(), &out->model)
@@ -57,6 +59,7 @@ RobotScene* MakeScene(double noise_sigma) {
   AssetScanOptions options;
   options.scan.spacing = 0.004;
   options.scan.noise_sigma = noise_sigma;
+  options.scan.range_noise.signal_model = incidence_noise;
   options.seed = 3;
   VirtualScan scan;
   CHECK(ScanAsset(out->model, out->q, out->T_world_base, options, &scan, nullptr).ok());
@@ -238,6 +241,56 @@ TEST(ChainRefinementTest, ToleranceAndCadDeviationMustBeInRange) {
   options = ChainRefinementOptions();
   options.cad_deviation_patch = 0.0;
   EXPECT_FALSE(options.IsValid(&error));
+  options = ChainRefinementOptions();
+  options.incidence_cosine = 1.5;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("incidence_cosine"), std::string::npos);
+}
+
+// A footprint that spreads over a grazing face (over 1/cos of its width)
+// returns ranges off the surface where it meets an edge. Here every return
+// at less than 0.2 of normal incidence (the scan's intensity: beyond 78
+// degrees) is moved 1 mm beyond its surface: with incidence weights such
+// returns pull the joints (from where the refinement leaves them on the
+// unmoved scan) less than half as far.
+TEST(ChainRefinementTest, IncidenceWeightsLetGrazingReturnsPullLess) {
+  static const RobotScene* exact = MakeScene(0.0);
+  static const RobotScene* grazing = [] {
+    RobotScene* scene = MakeScene(0.0);
+    for (OrganizedScan& scan : scene->scans.scans) {
+      for (size_t i = 0; i < scan.size(); ++i) {
+        const Eigen::Vector3f& p = scan.point_scanner(i);
+        if (!p.allFinite() || scan.intensity(i) >= 0.2f) continue;
+        scan.SetPoint(i, p + 0.001f * p.normalized(), scan.intensity(i));
+      }
+    }
+    return scene;
+  }();
+  auto estimate = [&](const RobotScene& s, bool weights) {
+    ChainRefinementOptions options;
+    options.incidence_cosine = weights ? 1.0 : 0.0;
+    Pose T_world_base = s.T_world_base;
+    std::vector<double> q = s.q;
+    ChainRefinementSummary summary;
+    EXPECT_TRUE(RefineOn(s, s.samples, options, &T_world_base, &q, &summary).ok());
+    return q;
+  };
+  auto pull = [&](bool weights) {
+    const std::vector<double> moved = estimate(*grazing, weights);
+    const std::vector<double> unmoved = estimate(*exact, weights);
+    double sum = 0.0;  // squared joint differences, the round flange's left out
+    for (const int j : exact->model.IndependentJoints()) {
+      const size_t k = static_cast<size_t>(j);
+      if (exact->model.joints()[k].name == "joint_6") continue;
+      sum += std::pow((moved[k] - unmoved[k]) / kDeg, 2);
+    }
+    return std::sqrt(sum);
+  };
+  const double uniform = pull(false);
+  const double weighted = pull(true);
+  std::printf("pull of the grazing returns (root sum of squares): %.4f deg uniform, "
+              "%.4f deg weighted\n", uniform, weighted);
+  EXPECT_LT(weighted, 0.5 * uniform);
 }
 
 TEST(ChainRefinementTest, CovarianceAloneKeepsTheEstimate) {

@@ -55,6 +55,7 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   const nlohmann::json& options = result["options"];
   EXPECT_EQ(options["weighting"], "uniform");
   EXPECT_DOUBLE_EQ(options["visibility_tolerance_m"].get<double>(), 0.002);
+  EXPECT_DOUBLE_EQ(options["incidence_cosine"].get<double>(), 0.0);  // off
   EXPECT_FALSE(options["remove_mixed_pixels"].get<bool>());
   EXPECT_FALSE(options["refine_without_mixed_pixels"].get<bool>());
   EXPECT_EQ(options["mixed_pixels"]["neighbour_lines"].get<int>(), 0);
