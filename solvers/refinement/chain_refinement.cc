@@ -4,7 +4,6 @@
 #include <ceres/crs_matrix.h>
 #include <glog/logging.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -219,25 +218,9 @@ void Covariance(double cost, double cad_deviation, const SurfacePatches& patches
   // (it logs an error otherwise).
   ceres::CRSMatrix jacobian;
   chain->problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &jacobian);
-  Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(jacobian.num_cols, jacobian.num_cols);
-  for (int row = 0; row < jacobian.num_rows; ++row) {
-    const int begin = jacobian.rows[static_cast<size_t>(row)];
-    const int end = jacobian.rows[static_cast<size_t>(row) + 1];
-    for (int a = begin; a < end; ++a) {
-      for (int b = begin; b < end; ++b) {
-        JtJ(jacobian.cols[static_cast<size_t>(a)], jacobian.cols[static_cast<size_t>(b)]) +=
-            jacobian.values[static_cast<size_t>(a)] * jacobian.values[static_cast<size_t>(b)];
-      }
-    }
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(JtJ);
-  const Eigen::VectorXd& eigenvalues = eigen.eigenvalues();
-  if (!(eigenvalues.minCoeff() > 1e-12 * eigenvalues.maxCoeff())) return;
-  const Eigen::MatrixXd cad = patches.Covariance(
-      jacobian,
-      eigen.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() *
-          eigen.eigenvectors().transpose(),
-      cad_deviation);
+  Eigen::MatrixXd H_inverse;
+  if (!InverseNormalMatrix(jacobian, &H_inverse)) return;
+  const Eigen::MatrixXd cad = patches.Covariance(jacobian, H_inverse, cad_deviation);
   ceres::Covariance::Options covariance_options;
   covariance_options.algorithm_type = ceres::DENSE_SVD;
   covariance_options.num_threads = 1;

@@ -2,9 +2,30 @@
 
 #include <glog/logging.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 namespace edgefit {
+
+bool InverseNormalMatrix(const ceres::CRSMatrix& jacobian, Eigen::MatrixXd* H_inverse) {
+  Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(jacobian.num_cols, jacobian.num_cols);
+  for (int row = 0; row < jacobian.num_rows; ++row) {
+    const int begin = jacobian.rows[static_cast<size_t>(row)];
+    const int end = jacobian.rows[static_cast<size_t>(row) + 1];
+    for (int a = begin; a < end; ++a) {
+      for (int b = begin; b < end; ++b) {
+        JtJ(jacobian.cols[static_cast<size_t>(a)], jacobian.cols[static_cast<size_t>(b)]) +=
+            jacobian.values[static_cast<size_t>(a)] * jacobian.values[static_cast<size_t>(b)];
+      }
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(JtJ);
+  const Eigen::VectorXd& eigenvalues = eigen.eigenvalues();
+  if (!(eigenvalues.minCoeff() > 1e-12 * eigenvalues.maxCoeff())) return false;
+  *H_inverse = eigen.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() *
+               eigen.eigenvectors().transpose();
+  return true;
+}
 
 void SurfacePatches::AddPlaneRow(int link, const Eigen::Vector3d& p_link,
                                  const Eigen::Vector3d& n_world, double scale) {

@@ -25,6 +25,10 @@
 
 namespace edgefit {
 
+// H^-1 = (J^T J)^-1 of a problem's Jacobian; false (nothing written) when
+// J^T J is singular: an eigenvalue below 1e-12 of the largest.
+bool InverseNormalMatrix(const ceres::CRSMatrix& jacobian, Eigen::MatrixXd* H_inverse);
+
 // The patch of every residual row of a problem, in the problem's order.
 class SurfacePatches {
  public:
