@@ -4,7 +4,8 @@
 // sequential-fit-sized error (base 3 mm and 0.1 degrees, every joint 0.3
 // degrees) one problem over base and joints brings them back within the
 // scan's noise, and the covariance tells the one joint the scan does not
-// pin (the round flange's); the covariance alone leaves the estimate as it is.
+// pin (the round flange's); the covariance alone leaves the estimate as it is;
+// incidence weights let returns at grazing incidence pull the joints less.
 #include "solvers/refinement/chain_refinement.h"
 
 #include <glog/logging.h>
