@@ -278,15 +278,19 @@ int RunBench(const Command& command) {
                 EDGEFIT_RETURN_IF_ERROR_EXIT(
                     command, ScanBenchCase(model, c, scan_options, &scan, &T_survey_world));
                 for (const FitSetting& fit : fits) {
-                  Run run{asset.name, c.name, scan_setting, fit, Label(axes, scan_setting, fit),
-                          {}};
+                  Run run;
+                  run.asset = asset.name;
+                  run.posture = c.name;
+                  run.scan = scan_setting;
+                  run.fit = fit;
+                  run.label = Label(axes, scan_setting, fit);
                   Progress("bench: fit " + counter.Next() + ": " + scene + ", " + fit.weighting +
                            " weights, " + run.label);
-                  FitOptions options;
-                  EDGEFIT_RETURN_IF_ERROR_EXIT(command, BenchFitOptions(asset.kind, fit, seed, &options));
+                  EDGEFIT_RETURN_IF_ERROR_EXIT(
+                      command, BenchFitOptions(asset.kind, fit, seed, &run.options));
                   EDGEFIT_RETURN_IF_ERROR_EXIT(
                       command,
-                      FitBenchCase(model, c, scan.scans, T_survey_world, options, &run.result,
+                      FitBenchCase(model, c, scan.scans, T_survey_world, run.options, &run.result,
                                    FLAGS_fit_progress ? ProgressFn(Progress) : nullptr));
                   runs.push_back(std::move(run));
                 }

@@ -87,6 +87,7 @@ nlohmann::json RunJson(const Run& run) {
             {"sweep_step_deg", run.fit.sweep_step_deg},
             {"search", run.fit.search},
             {"refine_chain", run.fit.refine_chain}}},
+          {"options", FitOptionsJson(run.options)},  // every fit option, as result.json's
           {"points", run.result.points},
           {"joint_names", names},  // the independent joints in the model's order
           {"joint_errors", joints},  // observable independent joints [rad] or [m]

@@ -39,7 +39,8 @@ struct Run {
   std::string asset, posture;
   ScanSetting scan;
   FitSetting fit;
-  std::string label;  // the varied settings, e.g. "w_high=5"
+  std::string label;   // the varied settings, e.g. "w_high=5"
+  FitOptions options;  // as fitted: the axes over the fit flags
   BenchResult result;
 };
 

@@ -101,7 +101,8 @@ json JointStatusJson(const KinematicModel& model, const FitResult& fit, const js
                         "'s limits (the same geometry), the one nearest zero is reported";
     }
     const BaseSymmetry& symmetry = fit.base_symmetry;
-    if (symmetry.joint >= 0 && model.joints()[static_cast<size_t>(symmetry.joint)].name == b.joint) {
+    if (symmetry.joint >= 0 &&
+        model.joints()[static_cast<size_t>(symmetry.joint)].name == b.joint) {
       const double q = fit.q[static_cast<size_t>(symmetry.joint)];
       std::string turns;
       for (const double t : symmetry.turns) {
@@ -113,7 +114,8 @@ json JointStatusJson(const KinematicModel& model, const FitResult& fit, const js
       }
       v["convention"] = "the base looks the same turned by " + turns + " deg about " + b.joint +
                         "'s axis, so no scan tells the base's yaw from " + b.joint +
-                        ": of those placements the one with " + b.joint + " nearest zero is reported";
+                        ": of those placements the one with " + b.joint +
+                        " nearest zero is reported";
     }
     v["std"] = joint_std.contains(b.joint) ? joint_std[b.joint] : json(nullptr);
     v["alternatives"] = alternatives;
@@ -137,7 +139,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
   const Eigen::Vector3d rpy = RpyFromRotation(fit.T_world_base.linear());
   const Eigen::Vector3d xyz = fit.T_world_base.translation();
   json joints = json::object(), joint_types = json::object();
-  json joint_std = json::object();  // chain_refinement.h; null: not determined
+  json joint_std = json::object();            // chain_refinement.h; null: not determined
   json joint_std_residuals = json::object();  // the residuals' part alone: lower bounds
   const ChainRefinementSummary& chain = fit.chain_refinement;
   for (size_t j = 0; j < model.joints().size(); ++j) {
@@ -148,9 +150,9 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
     if (model.joints()[j].IsIndependent()) {  // none when the fit stopped before the chain
       joint_std[model.joints()[j].name] =
           j < chain.joint_std.size() ? NumberOrNull(chain.joint_std[j]) : json(nullptr);
-      joint_std_residuals[model.joints()[j].name] =
-          j < chain.joint_std_residuals.size() ? NumberOrNull(chain.joint_std_residuals[j])
-                                               : json(nullptr);
+      joint_std_residuals[model.joints()[j].name] = j < chain.joint_std_residuals.size()
+                                                        ? NumberOrNull(chain.joint_std_residuals[j])
+                                                        : json(nullptr);
     }
   }
   for (const BodyQuality& b : fit.bodies) {  // no spread for what no scan decides
@@ -215,27 +217,34 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
               {"sigma_m", chain.sigma},
               {"joint_std_residuals", joint_std_residuals},
               {"covariance_ok", chain.covariance_ok}}}}},
-          {"options",
-           {{"weighting", options.uniform_weights ? "uniform" : "edge"},
-            {"w_high", options.edges.w_high},
-            {"loss", options.residuals.loss},
-            {"lambda", options.residuals.lambda},
-            {"parameterization", JointParameterizationName(options.residuals.parameterization)},
-            {"refine_chain", refined},
-            {"visibility_tolerance_m", options.refinement.chain.visibility_tolerance},
-            {"cad_deviation_m", options.refinement.chain.cad_deviation},
-            {"cad_deviation_patch_m", options.refinement.chain.cad_deviation_patch},
-            {"incidence_cosine", options.refinement.chain.incidence_cosine},
-            {"remove_mixed_pixels", options.remove_mixed_pixels},
-            {"refine_without_mixed_pixels",
-             options.refine_without_mixed_pixels && !options.remove_mixed_pixels},
-            {"mixed_pixels",
-             {{"tolerance_m", options.mixed_pixels.tolerance},
-              {"tolerance_per_spacing", options.mixed_pixels.tolerance_per_spacing},
-              {"min_lines", options.mixed_pixels.min_lines},
-              {"neighbour_lines", options.mixed_pixels.neighbour_lines}}},
-            {"seed", options.seed}}},
+          {"options", FitOptionsJson(options)},
           {"threads", omp_get_max_threads()}};
+}
+
+json FitOptionsJson(const FitOptions& options) {
+  return {{"weighting", options.uniform_weights ? "uniform" : "edge"},
+          {"w_high", options.edges.w_high},
+          {"loss", options.residuals.loss},
+          {"lambda", options.residuals.lambda},
+          {"parameterization", JointParameterizationName(options.residuals.parameterization)},
+          {"refine_chain", options.refinement.chain.refine},
+          {"align_stations", options.stations.align},
+          {"station_rounds", options.stations.rounds},
+          {"station_max_covered_share", options.stations.max_covered_share},
+          {"covering_rounds", options.refinement.coverings.rounds},
+          {"visibility_tolerance_m", options.refinement.chain.visibility_tolerance},
+          {"cad_deviation_m", options.refinement.chain.cad_deviation},
+          {"cad_deviation_patch_m", options.refinement.chain.cad_deviation_patch},
+          {"incidence_cosine", options.refinement.chain.incidence_cosine},
+          {"remove_mixed_pixels", options.remove_mixed_pixels},
+          {"refine_without_mixed_pixels",
+           options.refine_without_mixed_pixels && !options.remove_mixed_pixels},
+          {"mixed_pixels",
+           {{"tolerance_m", options.mixed_pixels.tolerance},
+            {"tolerance_per_spacing", options.mixed_pixels.tolerance_per_spacing},
+            {"min_lines", options.mixed_pixels.min_lines},
+            {"neighbour_lines", options.mixed_pixels.neighbour_lines}}},
+          {"seed", options.seed}};
 }
 
 json FitTimingsJson(const FitTimings& timings) {

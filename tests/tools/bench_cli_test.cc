@@ -56,11 +56,13 @@ TEST_F(CliTest, BenchPrintsThePapersTables) {
 }
 
 TEST_F(CliTest, BenchRunsTheProductOfItsAblationAxes) {
-  const RunResult r = Run("bench --assets=conveyor --conveyor_urdf=" + kAssets +
-                          "conveyor/conveyor.urdf --conveyor_postures=" + kAssets +
-                          "conveyor/postures.json --only=load --scenes=without "
-                          "--weightings=edge --spacing_mm=8 --refine_chains=off,on --out_json=" +
-                          Path("ablation.json") + " --out_report=" + Path("ablation.html"));
+  const RunResult r =
+      Run("bench --assets=conveyor --conveyor_urdf=" + kAssets +
+          "conveyor/conveyor.urdf --conveyor_postures=" + kAssets +
+          "conveyor/postures.json --only=load --scenes=without "
+          "--weightings=edge --spacing_mm=8 --refine_chains=off,on --incidence_cosine=0.5 "
+          "--out_json=" +
+          Path("ablation.json") + " --out_report=" + Path("ablation.html"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("## Per setting"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| conveyor | without | edge | sequential | 1 |"), std::string::npos)
@@ -71,6 +73,12 @@ TEST_F(CliTest, BenchRunsTheProductOfItsAblationAxes) {
   ASSERT_EQ(json.size(), 2u);
   EXPECT_FALSE(json[0]["settings"]["refine_chain"].get<bool>());
   EXPECT_TRUE(json[1]["settings"]["refine_chain"].get<bool>());
+  // Every run records the fit options it was made with, the fit flags given
+  // to the bench among them.
+  EXPECT_FALSE(json[0]["options"]["refine_chain"].get<bool>());
+  EXPECT_TRUE(json[1]["options"]["refine_chain"].get<bool>());
+  EXPECT_DOUBLE_EQ(json[1]["options"]["incidence_cosine"].get<double>(), 0.5);
+  EXPECT_EQ(json[1]["options"]["weighting"], "edge");
   EXPECT_EQ(json[1]["label"], "refine_chain");
   EXPECT_EQ(json[1]["prismatic_joints"].size(), 6u);
   for (const auto& [joint, error] : json[1]["joint_errors"].items()) {

@@ -39,9 +39,8 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   }
   EXPECT_EQ(result["joint_types"]["joint_1"], "revolute");
   EXPECT_EQ(result["joint_types"]["piston_joint"], "prismatic");
-  for (const char* stage :
-       {"load", "edges", "base_rough", "base_precise", "chain", "refine", "alternatives",
-        "total"}) {
+  for (const char* stage : {"load", "edges", "base_rough", "base_precise", "chain", "refine",
+                            "alternatives", "total"}) {
     EXPECT_TRUE(result["timing_s"].contains(stage)) << stage;
   }
   // The alternatives' checks are a part of the stages they run in.
@@ -56,6 +55,8 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   EXPECT_EQ(options["weighting"], "uniform");
   EXPECT_DOUBLE_EQ(options["visibility_tolerance_m"].get<double>(), 0.002);
   EXPECT_DOUBLE_EQ(options["incidence_cosine"].get<double>(), 0.0);  // off
+  EXPECT_TRUE(options["align_stations"].get<bool>());
+  EXPECT_EQ(options["covering_rounds"].get<int>(), 2);
   EXPECT_FALSE(options["remove_mixed_pixels"].get<bool>());
   EXPECT_FALSE(options["refine_without_mixed_pixels"].get<bool>());
   EXPECT_EQ(options["mixed_pixels"]["neighbour_lines"].get<int>(), 0);
@@ -149,7 +150,8 @@ TEST_F(CliTest, FitBadInput) {
   ExpectBadInput("fit --urdf=" + kModel + out, "--scan is required");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample, "--out is required");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + Path("none.ptx") + out, "none.ptx");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --roi=1,2,3", "--roi: expected");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --roi=1,2,3",
+                 "--roi: expected");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --roi=50,50,0,51,51,1",
                  "--roi: the box holds none of the");
   ExpectBadInput("fit --urdf=" + Path("none.urdf") + " --scan=" + sample + out, "none.urdf");

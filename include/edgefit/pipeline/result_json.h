@@ -23,6 +23,10 @@ nlohmann::json FitResultJson(const KinematicModel& model, AssetKind kind, const 
 // the world axes, `rotation_rad` and `xyz_m` (null where not computed).
 nlohmann::json BaseStdJson(const ChainRefinementSummary& chain);
 
+// result.json's options: the weighting, the loss and every extension's
+// setting, as fitted (edgefit bench writes them with each run too).
+nlohmann::json FitOptionsJson(const FitOptions& options);
+
 // The stages' seconds, as result.json's timing_s holds them: edges,
 // stations, base_rough, base_precise, chain, refine, alternatives.
 nlohmann::json FitTimingsJson(const FitTimings& timings);
