@@ -113,9 +113,9 @@ ceres::Problem::Options ProblemOptions(ceres::EvaluationCallback* callback) {
 struct ChainProblem {
   ChainProblem(const KinematicModel& model, const Pose& T_world_base,
                const std::vector<double>& q_full, const ScanSet& scans, const PosedSamples& posed,
-               const std::vector<Correspondence>& correspondences,
-               bool point_to_plane, double incidence_cosine, size_t batch,
-               ceres::LossFunction* loss, SurfacePatches* patches = nullptr)
+               const std::vector<Correspondence>& correspondences, bool point_to_plane,
+               double incidence_cosine, size_t batch, ceres::LossFunction* loss,
+               SurfacePatches* patches = nullptr)
       : q_independent(std::max<size_t>(model.IndependentJoints().size(), 1), 0.0),
         kinematics(&model, T_world_base, q_full, delta_base, q_independent.data()),
         problem(ProblemOptions(&kinematics)) {
@@ -254,11 +254,10 @@ void Covariance(double cost, double cad_deviation, const SurfacePatches& patches
 
 }  // namespace
 
-Status RefineChain(const KinematicModel& model, const ScanSet& scans, CorrespondenceSearch* search,
-                   const std::vector<SurfaceSamples>& link_samples,
-                   const ChainRefinementOptions& options,
-                   const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q,
-                   ChainRefinementSummary* summary) {
+Status RefineChain(const KinematicModel& model, const ScanSet& scans, const CellMask* missing,
+                   CorrespondenceSearch* search, const std::vector<SurfaceSamples>& link_samples,
+                   const ChainRefinementOptions& options, const ResidualOptions& residuals,
+                   Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary) {
   CHECK(search != nullptr && T_world_base != nullptr && q != nullptr && summary != nullptr);
   const auto start = std::chrono::steady_clock::now();
   std::string error;
@@ -286,7 +285,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, Correspond
   *summary = ChainRefinementSummary();
   summary->joint_std.assign(model.joints().size(), NAN);
   summary->joint_std_residuals.assign(model.joints().size(), NAN);
-  const ScanVisibility visibility(&scans);
+  const ScanVisibility visibility(&scans, missing);
   Pose T_base = *T_world_base;
   std::vector<double> q_full = *q;
   (void)model.ResolveDependentJoints(&q_full);

@@ -118,13 +118,15 @@ struct ChainRefinementSummary {
 // *T_world_base and the independent joints of *q (every joint, model order;
 // the dependent ones are resolved) in place, under the loss of `residuals`
 // (its parameterization and lambda do not apply: the joints are the
-// parameters). Errors (estimate unchanged): invalid options, sizes that do
-// not match the model, no samples.
-Status RefineChain(const KinematicModel& model, const ScanSet& scans, CorrespondenceSearch* search,
-                   const std::vector<SurfaceSamples>& link_samples,
-                   const ChainRefinementOptions& options,
-                   const ResidualOptions& residuals, Pose* T_world_base, std::vector<double>* q,
-                   ChainRefinementSummary* summary);
+// parameters). `missing` (nullptr: none): cells of `scans` taken as if
+// their beam had returned nothing (mixed pixels), in the visibility test;
+// `search` must leave them out as well (CorrespondenceSearch's `missing`).
+// Errors (estimate unchanged): invalid options, sizes that do not match the
+// model, no samples.
+Status RefineChain(const KinematicModel& model, const ScanSet& scans, const CellMask* missing,
+                   CorrespondenceSearch* search, const std::vector<SurfaceSamples>& link_samples,
+                   const ChainRefinementOptions& options, const ResidualOptions& residuals,
+                   Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary);
 
 }  // namespace edgefit
 

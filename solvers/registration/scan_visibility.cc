@@ -6,8 +6,10 @@
 
 namespace edgefit {
 
-ScanVisibility::ScanVisibility(const ScanSet* scans) : scans_(scans) {
+ScanVisibility::ScanVisibility(const ScanSet* scans, const CellMask* missing)
+    : scans_(scans), missing_(missing) {
   CHECK(scans_ != nullptr);
+  if (missing_ != nullptr) CHECK_EQ(missing_->size(), scans_->scans.size());
   for (const OrganizedScan& scan : scans_->scans) {
     T_scanner_world_.push_back(scan.T_world_scanner().inverse());
     scanner_origins_world_.push_back(scan.T_world_scanner().translation());
@@ -32,7 +34,9 @@ ScanView ScanVisibility::View(size_t s, const Eigen::Vector3d& q_world,
   int row = 0, col = 0;
   if (!scan.lattice().ProjectToCell(q_scanner, &row, &col)) return ScanView::kOutside;
   const size_t cell = scan.Index(row, col);
-  if (!scan.IsValid(cell)) return ScanView::kEmpty;
+  if (!scan.IsValid(cell) || (missing_ != nullptr && (*missing_)[s][cell] != 0)) {
+    return ScanView::kEmpty;
+  }
   return static_cast<double>(scan.point_scanner(cell).norm()) >= q_scanner.norm() - tolerance
              ? ScanView::kSeen
              : ScanView::kOccluded;

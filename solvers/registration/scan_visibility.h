@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "edgefit/core/pose.h"
+#include "edgefit/correspondence/correspondences.h"
 #include "edgefit/scan/organized_scan.h"
 
 namespace edgefit {
@@ -26,8 +27,10 @@ enum class ScanView {
 
 class ScanVisibility {
  public:
-  // `scans` is borrowed and must outlive this object.
-  explicit ScanVisibility(const ScanSet* scans);
+  // `scans` and `missing` (nullptr: none; cells taken as if their beam had
+  // returned nothing, kEmpty: mixed pixels) are borrowed and must outlive
+  // this object.
+  explicit ScanVisibility(const ScanSet* scans, const CellMask* missing = nullptr);
 
   // The view of scan s of q_world with outward unit normal n_world;
   // tolerance [m]: how much nearer than q the scan's range at q's cell may
@@ -46,6 +49,7 @@ class ScanVisibility {
 
  private:
   const ScanSet* scans_;
+  const CellMask* missing_;
   std::vector<Pose> T_scanner_world_;                   // per scan
   std::vector<Eigen::Vector3d> scanner_origins_world_;  // per scan
 };

@@ -17,8 +17,8 @@ struct KdTreeSearch::Tree {
 };
 
 KdTreeSearch::KdTreeSearch(const ScanSet* scans, const CellWeights* weights,
-                           const CellMask* excluded)
-    : scans_(scans), weights_(weights), excluded_(excluded) {
+                           const CellMask* excluded, const CellMask* missing)
+    : scans_(scans), weights_(weights), excluded_(excluded), missing_(missing) {
   CHECK(scans_ != nullptr);
   if (weights_ != nullptr) {
     CHECK_EQ(weights_->size(), scans_->scans.size());
@@ -26,10 +26,11 @@ KdTreeSearch::KdTreeSearch(const ScanSet* scans, const CellWeights* weights,
       CHECK_EQ((*weights_)[s].size(), scans_->scans[s].size());
     }
   }
-  if (excluded_ != nullptr) {
-    CHECK_EQ(excluded_->size(), scans_->scans.size());
+  for (const CellMask* mask : {excluded_, missing_}) {
+    if (mask == nullptr) continue;
+    CHECK_EQ(mask->size(), scans_->scans.size());
     for (size_t s = 0; s < scans_->scans.size(); ++s) {
-      CHECK_EQ((*excluded_)[s].size(), scans_->scans[s].size());
+      CHECK_EQ((*mask)[s].size(), scans_->scans[s].size());
     }
   }
 }
@@ -46,8 +47,9 @@ bool KdTreeSearch::SetCrop(const Eigen::AlignedBox3d& crop_world) {
   cell_of_.clear();
   for (size_t s = 0; s < scans_->scans.size(); ++s) {
     const OrganizedScan& scan = scans_->scans[s];
+    const uint8_t* missing = missing_ != nullptr ? (*missing_)[s].data() : nullptr;
     for (size_t i = 0; i < scan.size(); ++i) {
-      if (!scan.IsValid(i)) continue;
+      if (!scan.IsValid(i) || (missing != nullptr && missing[i] != 0)) continue;
       const Eigen::Vector3d p_world = scan.PointWorld(i);
       if (!crop_world.contains(p_world)) continue;
       points_world_.push_back(p_world.cast<float>());

@@ -9,12 +9,13 @@
 namespace edgefit {
 
 LatticeSearch::LatticeSearch(const ScanSet* scans, const CellWeights* weights,
-                             const CellMask* excluded)
-    : scans_(scans), weights_(weights), excluded_(excluded) {
+                             const CellMask* excluded, const CellMask* missing)
+    : scans_(scans), weights_(weights), excluded_(excluded), missing_(missing) {
   CHECK(scans_ != nullptr);
   const size_t n = scans_->scans.size();
   if (weights_ != nullptr) CHECK_EQ(weights_->size(), n);
   if (excluded_ != nullptr) CHECK_EQ(excluded_->size(), n);
+  if (missing_ != nullptr) CHECK_EQ(missing_->size(), n);
   T_scanner_world_.resize(n);
   searchable_.resize(n);
   for (size_t s = 0; s < n; ++s) {
@@ -24,6 +25,7 @@ LatticeSearch::LatticeSearch(const ScanSet* scans, const CellWeights* weights,
                      scan.lattice().rows() == scan.rows() && scan.lattice().cols() == scan.cols();
     if (weights_ != nullptr) CHECK_EQ((*weights_)[s].size(), scan.size());
     if (excluded_ != nullptr) CHECK_EQ((*excluded_)[s].size(), scan.size());
+    if (missing_ != nullptr) CHECK_EQ((*missing_)[s].size(), scan.size());
   }
 }
 
@@ -47,6 +49,7 @@ Correspondence LatticeSearch::NearestIn(int only_scan, const Eigen::Vector3f& q_
     // have seen anything along the query's ray.
     if (!scan.lattice().ProjectToCell(q_scanner, &row, &col)) continue;
     const Eigen::Vector3f qf = q_scanner.cast<float>();
+    const uint8_t* missing = missing_ != nullptr ? (*missing_)[s].data() : nullptr;
     const int rows = scan.rows(), cols = scan.cols();
     const bool wrap = scan.lattice().full_circle();
     const int r0 = std::max(0, row - window), r1 = std::min(rows - 1, row + window);
@@ -59,6 +62,7 @@ Correspondence LatticeSearch::NearestIn(int only_scan, const Eigen::Vector3f& q_
       const size_t base = static_cast<size_t>(c) * static_cast<size_t>(rows);
       for (int r = r0; r <= r1; ++r) {
         const size_t cell = base + static_cast<size_t>(r);
+        if (missing != nullptr && missing[cell] != 0) continue;
         // A missing cell is NaN, so d2 is NaN and both tests are false.
         const float d2 = (scan.point_scanner(cell) - qf).squaredNorm();
         if (d2 < best_d2 || (d2 == best_d2 && static_cast<int>(s) == best_scan &&

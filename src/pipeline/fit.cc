@@ -234,16 +234,17 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
 
   // Extensions: the stations registered to the fitted model, then the whole
   // chain at once on them, and its covariance.
+  const CellMask mixed = RefinementMissingCells(work, options, say);
   if (align_stations) {
     EDGEFIT_RETURN_IF_ERROR(
-        AlignStationsStage(model, &own, &search, weights, cad, options, say, result));
+        AlignStationsStage(model, &own, mixed, &search, weights, cad, options, say, result));
   }
   const ScanSet& final_scans = work;
   CorrespondenceSearch final_search(&final_scans, weights);
   WeightedIcp final_icp(&final_scans, &final_search, scan_normals, options.residuals);
   CellMask covered;
-  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, &final_search, weights, cad, options,
-                                           say, result, &covered));
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, final_scans, mixed, &final_search, weights, cad,
+                                           options, say, result, &covered));
   const bool stations_moved =
       LargestCorrection(result->stations) > options.stations.refit_correction;
   const bool covered_link = CoveringsHideALink(result->coverings, options.refinement.coverings);
@@ -254,9 +255,9 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
     // body alone there.
     ChainFitter final_chain(model, options.chain, options.samples, cad.icp, cad.sweep, &final_icp,
                             &final_sweep, say);
-    EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, &final_chain, final_scans, &final_search,
-                                                 weights, cad, options, say, result, &best.records,
-                                                 &covered));
+    EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, &final_chain, final_scans, mixed,
+                                                 &final_search, weights, cad, options, say, result,
+                                                 &best.records, &covered));
     EDGEFIT_RETURN_IF_ERROR(
         JudgeQuality(model, &final_icp, cad, best.records, resolved, options, result));
     result->timings.total = Since(start);
@@ -291,12 +292,13 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   resolved = model.ResolveDependentJoints(&refit.q);
   result->q = refit.q;
   const CoveringSummary first_coverings = result->coverings;
-  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, clean_scans, &clean_search, weights, cad, options,
-                                           say, result, &covered));
+  const CellMask clean_mixed = RefinementMissingCells(clean_scans, options, say);
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, clean_scans, clean_mixed, &clean_search, weights,
+                                           cad, options, say, result, &covered));
   result->coverings = first_coverings;  // the cells left out of the second pass
-  EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, &clean_chain, clean_scans, &clean_search,
-                                               weights, cad, options, say, result, &refit.records,
-                                               &covered));
+  EDGEFIT_RETURN_IF_ERROR(RefineIntoBestBasins(model, &clean_chain, clean_scans, clean_mixed,
+                                               &clean_search, weights, cad, options, say, result,
+                                               &refit.records, &covered));
   EDGEFIT_RETURN_IF_ERROR(
       JudgeQuality(model, &clean_icp, cad, refit.records, resolved, options, result));
   if (covered_link) MarkBasinChanges(model, clean_chain, q_with_coverings, options, say, result);

@@ -23,7 +23,19 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
   return chain_samples;
 }
 
-Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
+CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
+                                const ProgressFn& say) {
+  if (!options.refinement.chain.refine || !options.refine_without_mixed_pixels ||
+      options.remove_mixed_pixels) {
+    return CellMask();
+  }
+  size_t mixed_pixels = 0;
+  CellMask mixed = FindMixedPixels(scans, options.mixed_pixels, &mixed_pixels);
+  say("chain: " + std::to_string(mixed_pixels) + " mixed pixels left out of the refinement");
+  return mixed;
+}
+
+Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const CellMask& missing,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
                         FitResult* result, CellMask* covered) {
@@ -31,22 +43,15 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
   const auto start = std::chrono::steady_clock::now();
   const ChainRefinementOptions& refinement = options.refinement.chain;
   if (refinement.refine) say("chain: whole-chain refinement (base and every joint at once)");
-  // Its scans: without their mixed pixels (FitOptions::refine_without_mixed_pixels).
-  ScanSet unmixed;
-  size_t mixed_pixels = 0;
-  const bool leave_out_mixed =
-      refinement.refine && options.refine_without_mixed_pixels && !options.remove_mixed_pixels;
-  if (leave_out_mixed) unmixed = WithoutMixedPixels(scans, options.mixed_pixels, &mixed_pixels);
-  const ScanSet& refine_scans = leave_out_mixed ? unmixed : scans;
-  CorrespondenceSearch unmixed_search(&refine_scans, weights);
-  CorrespondenceSearch* refine_search = leave_out_mixed ? &unmixed_search : search;
-  if (leave_out_mixed) {
-    say("chain: " + std::to_string(mixed_pixels) + " mixed pixels left out of the refinement");
-  }
+  // Its scans: their mixed pixels taken as missing
+  // (FitOptions::refine_without_mixed_pixels).
+  const CellMask* mixed = missing.empty() ? nullptr : &missing;
+  CorrespondenceSearch unmixed_search(&scans, weights, nullptr, mixed);
+  CorrespondenceSearch* refine_search = mixed != nullptr ? &unmixed_search : search;
   const std::vector<SurfaceSamples>& chain_samples = cad.chain;
-  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, refine_scans, refine_search, chain_samples,
-                                      refinement, options.residuals, &result->T_world_base,
-                                      &result->q, &result->chain_refinement));
+  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, refine_search, chain_samples, refinement,
+                                      options.residuals, &result->T_world_base, &result->q,
+                                      &result->chain_refinement));
 
   // Coverings (jackets, covers) found at the estimate and left out, then
   // the chain refined again without them.
@@ -61,8 +66,8 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
                   "(jackets, covers): refining without them",
                   result->coverings.covered, result->coverings.matched);
     say(line);
-    CorrespondenceSearch masked_search(&refine_scans, weights, covered);
-    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, refine_scans, &masked_search, chain_samples,
+    CorrespondenceSearch masked_search(&scans, weights, covered, mixed);
+    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, &masked_search, chain_samples,
                                         refinement, options.residuals, &result->T_world_base,
                                         &result->q, &result->chain_refinement));
   }
@@ -80,10 +85,10 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
 }
 
 Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, const ScanSet& scans,
-                            CorrespondenceSearch* search, const CellWeights* weights,
-                            const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                            FitResult* result, std::vector<JointRecord>* records,
-                            CellMask* covered) {
+                            const CellMask& missing, CorrespondenceSearch* search,
+                            const CellWeights* weights, const CadSamples& cad,
+                            const FitOptions& options, const ProgressFn& say, FitResult* result,
+                            std::vector<JointRecord>* records, CellMask* covered) {
   const auto start = std::chrono::steady_clock::now();
   const double refine_before = result->timings.refine;  // this stage's time is added to it
   const CoveringSummary coverings = result->coverings;
@@ -101,8 +106,8 @@ Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, con
     say(line);
     if (!take || !moved) break;
     say("chain: refining again from the better basins");
-    EDGEFIT_RETURN_IF_ERROR(
-        RefineWholeChain(model, scans, search, weights, cad, options, say, result, covered));
+    EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, scans, missing, search, weights, cad, options,
+                                             say, result, covered));
   }
   result->coverings = coverings;  // the verdict's: the cells left out of the first refinement
   const auto pinning_start = std::chrono::steady_clock::now();

@@ -49,14 +49,21 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const B
 std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadSamples& cad,
                                          const FitOptions& options);
 
+// The cells of `scans` the whole-chain refinement takes as missing: their
+// mixed pixels (FitOptions::refine_without_mixed_pixels), found once per
+// scan set (they do not move with the stations' poses); empty when the
+// refinement keeps them.
+CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
+                                const ProgressFn& say);
+
 // The whole chain refined at once (options.refinement), or its covariance
 // alone, from result->T_world_base and result->q, in place; then, for
 // options.refinement.coverings.rounds, refined again without the coverings
-// found at the estimate, on `scans` without their mixed pixels
-// (FitOptions::refine_without_mixed_pixels; the coverings are found on
-// `scans`). weights: the search's (nullptr: uniform).
-// *covered: the last round's coverings (empty without rounds).
-Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
+// found at the estimate. The refinement takes the `missing` cells of
+// `scans` (RefinementMissingCells; empty: none) as missing, the coverings
+// are found on `scans` as they are. weights: the search's (nullptr:
+// uniform). *covered: the last round's coverings (empty without rounds).
+Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const CellMask& missing,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
                         FitResult* result, CellMask* covered);
@@ -70,10 +77,10 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans,
 // whether the scan pins each revolute joint at the final values
 // (CheckPinning).
 Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, const ScanSet& scans,
-                            CorrespondenceSearch* search, const CellWeights* weights,
-                            const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                            FitResult* result, std::vector<JointRecord>* records,
-                            CellMask* covered);
+                            const CellMask& missing, CorrespondenceSearch* search,
+                            const CellWeights* weights, const CadSamples& cad,
+                            const FitOptions& options, const ProgressFn& say, FitResult* result,
+                            std::vector<JointRecord>* records, CellMask* covered);
 
 // The verdict of every jointed body alone at the final values (the base's
 // is in result->bodies already), appended to result->bodies; result->ok
@@ -98,8 +105,9 @@ void SayWhyNotOk(const KinematicModel& model, const Status& resolved, const FitO
 // estimate moves) and the stations registered again there. *scans get the
 // last corrections in place (with more than one station and
 // options.stations.align). search: over *scans at their poses on entry
-// (as written); searches built on them before are stale after.
-Status AlignStationsStage(const KinematicModel& model, ScanSet* scans,
+// (as written); searches built on them before are stale after. missing:
+// RefinementMissingCells of *scans.
+Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, const CellMask& missing,
                           CorrespondenceSearch* search, const CellWeights* weights,
                           const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
                           FitResult* result);

@@ -8,9 +8,10 @@
 
 namespace edgefit {
 
-Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, CorrespondenceSearch* search,
-                          const CellWeights* weights, const CadSamples& cad,
-                          const FitOptions& options, const ProgressFn& say, FitResult* result) {
+Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, const CellMask& missing,
+                          CorrespondenceSearch* search, const CellWeights* weights,
+                          const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
+                          FitResult* result) {
   const StationAlignmentOptions& stations = options.stations;
   if (!stations.align || scans->scans.size() < 2) return Status::Ok();
   const auto start = std::chrono::steady_clock::now();
@@ -24,8 +25,8 @@ Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, Correspon
       // from the written poses again, at which `search` was built.
       CorrespondenceSearch aligned_search(scans, weights);
       CellMask covered;
-      EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, *scans, &aligned_search, weights, cad,
-                                               options, say, result, &covered));
+      EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, *scans, missing, &aligned_search, weights,
+                                               cad, options, say, result, &covered));
       for (size_t k = 0; k < T_written.size(); ++k) {
         scans->scans[k].set_T_world_scanner(T_written[k]);
       }

@@ -31,8 +31,8 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
     return scan.IsValid(i) ? static_cast<double>(scan.point_scanner(i).norm()) : std::nan("");
   };
   // The cell's spacing is range * step (0 without a lattice).
-  const double step = std::max(std::abs(scan.lattice().elevation_step()),
-                               std::abs(scan.lattice().azimuth_step()));
+  const double step =
+      std::max(std::abs(scan.lattice().elevation_step()), std::abs(scan.lattice().azimuth_step()));
 
   // Row, column and the two diagonals.
   constexpr int kLines[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
@@ -78,16 +78,24 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
   return mixed;
 }
 
+std::vector<std::vector<uint8_t>> FindMixedPixels(const ScanSet& scans,
+                                                  const MixedPixelOptions& options, size_t* count) {
+  std::vector<std::vector<uint8_t>> mixed;
+  *count = 0;
+  for (const OrganizedScan& scan : scans.scans) {
+    mixed.push_back(FindMixedPixels(scan, options));
+    for (const uint8_t m : mixed.back()) *count += m;
+  }
+  return mixed;
+}
+
 ScanSet WithoutMixedPixels(const ScanSet& scans, const MixedPixelOptions& options,
                            size_t* removed) {
+  const std::vector<std::vector<uint8_t>> mixed = FindMixedPixels(scans, options, removed);
   ScanSet out = scans;
-  *removed = 0;
-  for (OrganizedScan& scan : out.scans) {
-    const std::vector<uint8_t> mixed = FindMixedPixels(scan, options);
-    for (size_t i = 0; i < mixed.size(); ++i) {
-      if (mixed[i] == 0) continue;
-      scan.SetMissing(i);
-      ++*removed;
+  for (size_t s = 0; s < out.scans.size(); ++s) {
+    for (size_t i = 0; i < mixed[s].size(); ++i) {
+      if (mixed[s][i] != 0) out.scans[s].SetMissing(i);
     }
   }
   return out;

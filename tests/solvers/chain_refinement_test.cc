@@ -83,8 +83,8 @@ Status RefineOn(const RobotScene& s, const std::vector<SurfaceSamples>& samples,
                 ChainRefinementSummary* summary,
                 const ResidualOptions& residuals = ResidualOptions()) {
   CorrespondenceSearch search(&s.scans, nullptr);
-  return RefineChain(s.model, s.scans, &search, samples, options, residuals,
-                     T_world_base, q, summary);
+  return RefineChain(s.model, s.scans, nullptr, &search, samples, options, residuals, T_world_base,
+                     q, summary);
 }
 
 // The same on the scene with 1 mm noise.
@@ -289,8 +289,10 @@ TEST(ChainRefinementTest, IncidenceWeightsLetGrazingReturnsPullLess) {
   };
   const double uniform = pull(false);
   const double weighted = pull(true);
-  std::printf("pull of the grazing returns (root sum of squares): %.4f deg uniform, "
-              "%.4f deg weighted\n", uniform, weighted);
+  std::printf(
+      "pull of the grazing returns (root sum of squares): %.4f deg uniform, "
+      "%.4f deg weighted\n",
+      uniform, weighted);
   EXPECT_LT(weighted, 0.5 * uniform);
 }
 

@@ -20,8 +20,8 @@ class CorrespondenceSearch {
  public:
   // Borrowed; see LatticeSearch / KdTreeSearch.
   CorrespondenceSearch(const ScanSet* scans, const CellWeights* weights,
-                       const CellMask* excluded = nullptr)
-      : lattice_(scans, weights, excluded), kdtree_(scans, weights, excluded) {}
+                       const CellMask* excluded = nullptr, const CellMask* missing = nullptr)
+      : lattice_(scans, weights, excluded, missing), kdtree_(scans, weights, excluded, missing) {}
 
   // Matches of q_world (world frame [m]) ordered by source index. crop_world
   // bounds the kd-tree (ignored by the lattice search, which needs no crop).

@@ -46,7 +46,10 @@ struct CorrespondenceOptions {
 // Optional per-scan, per-cell target weights w_edge (cell index order), as
 // the edge detector writes them; nullptr means weight 1 everywhere.
 using CellWeights = std::vector<std::vector<float>>;
-// Per scan, per cell: 1 marks a cell (e.g. a covering's, left out).
+// Per scan, per cell: 1 marks a cell. The searches take two: `excluded`
+// (a covering's cells: a match to one carries weight 0, the sample is left
+// out) and `missing` (mixed pixels: taken as if the beam had returned
+// nothing, the sample matches its next nearest cell).
 using CellMask = std::vector<std::vector<uint8_t>>;
 
 // The weight a match to (scan, cell) carries: 0 when `excluded` marks the

@@ -22,11 +22,12 @@ namespace edgefit {
 
 class KdTreeSearch {
  public:
-  // `scans`, `weights` (nullptr: weight 1) and `excluded` (nullptr: none;
-  // a marked cell matches with weight 0) are borrowed and must outlive the
+  // `scans`, `weights` (nullptr: weight 1), `excluded` (nullptr: none;
+  // a marked cell matches with weight 0) and `missing` (nullptr: none; a
+  // marked cell is not in the tree) are borrowed and must outlive the
   // searcher.
-  KdTreeSearch(const ScanSet* scans, const CellWeights* weights,
-               const CellMask* excluded = nullptr);
+  KdTreeSearch(const ScanSet* scans, const CellWeights* weights, const CellMask* excluded = nullptr,
+               const CellMask* missing = nullptr);
   ~KdTreeSearch();
   KdTreeSearch(const KdTreeSearch&) = delete;
   KdTreeSearch& operator=(const KdTreeSearch&) = delete;
@@ -48,6 +49,7 @@ class KdTreeSearch {
   const ScanSet* scans_;
   const CellWeights* weights_;
   const CellMask* excluded_;
+  const CellMask* missing_;
   Eigen::AlignedBox3d crop_world_;
   bool built_ = false;
   std::vector<Eigen::Vector3f> points_world_;  // valid points inside the crop

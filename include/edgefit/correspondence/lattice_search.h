@@ -32,11 +32,13 @@ namespace edgefit {
 
 class LatticeSearch {
  public:
-  // `scans`, `weights` (nullptr: weight 1) and `excluded` (nullptr: none;
-  // a marked cell matches with weight 0) are borrowed and must outlive the
-  // searcher; weights[s] and excluded[s] must have scans[s].size() entries.
+  // `scans`, `weights` (nullptr: weight 1), `excluded` (nullptr: none;
+  // a marked cell matches with weight 0) and `missing` (nullptr: none; a
+  // marked cell is never matched) are borrowed and must outlive the
+  // searcher; weights[s] and the masks' [s] must have scans[s].size()
+  // entries.
   LatticeSearch(const ScanSet* scans, const CellWeights* weights,
-                const CellMask* excluded = nullptr);
+                const CellMask* excluded = nullptr, const CellMask* missing = nullptr);
 
   // Replaces *out with the gated matches of q_world, ordered by source index
   // (deterministic for any thread count). Uses options.window and
@@ -58,6 +60,7 @@ class LatticeSearch {
   const ScanSet* scans_;
   const CellWeights* weights_;
   const CellMask* excluded_;
+  const CellMask* missing_;
   std::vector<Eigen::Matrix<double, 3, 4>> T_scanner_world_;  // per scan, [R | t]
   std::vector<bool> searchable_;                              // per scan
   std::vector<Correspondence> best_;                          // per query; kept between calls (ICP)

@@ -69,6 +69,11 @@ struct MixedPixelOptions {
 // all 0 for an unorganized scan. Deterministic for any thread count.
 std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixelOptions& options);
 
+// The same for every scan of `scans` (per scan, per cell: a CellMask of
+// the searches, which take them as missing); *count counts them.
+std::vector<std::vector<uint8_t>> FindMixedPixels(const ScanSet& scans,
+                                                  const MixedPixelOptions& options, size_t* count);
+
 // A copy of `scans` with every mixed pixel a missing cell; *removed counts
 // them.
 ScanSet WithoutMixedPixels(const ScanSet& scans, const MixedPixelOptions& options, size_t* removed);
