@@ -217,6 +217,53 @@ TEST_P(LatticeSearchTest, KdTreeEqualsBruteForce) {
   }
 }
 
+// Cells marked `missing` (the refinement's mixed pixels) are searched as if
+// the beam had returned nothing: the same matches as on a copy of the scans
+// with those cells missing, for both searchers; `excluded` cells instead
+// keep their matches, at weight 0.
+TEST_P(LatticeSearchTest, MissingCellsMatchAsACopyWithoutThem) {
+  const CorrespondenceFixture& f = GetScene(GetParam()).fixture;
+  CellMask mask(f.scans.scans.size());
+  ScanSet without = f.scans;
+  size_t marked = 0;
+  for (size_t s = 0; s < mask.size(); ++s) {
+    mask[s].assign(f.scans.scans[s].size(), 0);
+    for (size_t i = 0; i < mask[s].size(); ++i) {
+      if (!f.scans.scans[s].IsValid(i) || (i * 7 + s) % 5 != 0) continue;
+      mask[s][i] = 1;
+      without.scans[s].SetMissing(i);
+      ++marked;
+    }
+  }
+  ASSERT_GT(marked, 1000u);
+  const Eigen::AlignedBox3d everything(Eigen::Vector3d::Constant(-1e3),
+                                       Eigen::Vector3d::Constant(1e3));
+  for (const bool use_lattice : {true, false}) {
+    CorrespondenceOptions options;
+    options.use_lattice = use_lattice;
+    CorrespondenceSearch masked(&f.scans, nullptr, nullptr, &mask);
+    CorrespondenceSearch copy(&without, nullptr);
+    std::vector<Correspondence> a, b;
+    masked.Find(f.q_world, everything, options, &a);
+    copy.Find(f.q_world, everything, options, &b);
+    ASSERT_GT(a.size(), 100u);
+    ASSERT_EQ(a.size(), b.size()) << "lattice " << use_lattice;
+    for (size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].source, b[i].source);
+      EXPECT_EQ(a[i].scan, b[i].scan);
+      EXPECT_EQ(a[i].cell, b[i].cell);
+      EXPECT_EQ(a[i].distance, b[i].distance);
+      EXPECT_EQ(mask[static_cast<size_t>(a[i].scan)][static_cast<size_t>(a[i].cell)], 0);
+    }
+    // The same cells excluded: some samples match them, at weight 0.
+    CorrespondenceSearch excluded(&f.scans, nullptr, &mask);
+    excluded.Find(f.q_world, everything, options, &a);
+    size_t zero = 0;
+    for (const Correspondence& m : a) zero += m.weight == 0.f;
+    EXPECT_GT(zero, 0u);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, LatticeSearchTest, ::testing::Values("Box", "FkArm"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param;

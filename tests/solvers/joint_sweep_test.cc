@@ -145,6 +145,36 @@ TEST(JointSweepTest, PerSampleLossesMarkTheHiddenAndSumToTheTotal) {
   }
 }
 
+// ScanVisibility's `missing` cells (the refinement's mixed pixels) are
+// views of nothing: every sample's view as on a copy of the scans with
+// those cells missing, some seen there turned kEmpty.
+TEST(ScanVisibilityTest, MissingCellsAreViewsOfNothing) {
+  const SweepScene scene = ScanLink(testing_util::LinkMesh());
+  CellMask mask(scene.scans.scans.size());
+  ScanSet without = scene.scans;
+  for (size_t s = 0; s < mask.size(); ++s) {
+    mask[s].assign(scene.scans.scans[s].size(), 0);
+    for (size_t i = 0; i < mask[s].size(); ++i) {
+      if (!scene.scans.scans[s].IsValid(i) || i % 3 != 0) continue;
+      mask[s][i] = 1;
+      without.scans[s].SetMissing(i);
+    }
+  }
+  const ScanVisibility plain(&scene.scans), masked(&scene.scans, &mask), copy(&without);
+  const Pose T_world_link = Joint().PoseAt(kTrueAngle);
+  size_t emptied = 0;
+  for (size_t k = 0; k < scene.samples.points.size(); ++k) {
+    const Eigen::Vector3d q = T_world_link * scene.samples.points[k].cast<double>();
+    const Eigen::Vector3d n = T_world_link.linear() * scene.samples.normals[k].cast<double>();
+    for (size_t s = 0; s < mask.size(); ++s) {
+      const ScanView view = masked.View(s, q, n, 0.002);
+      EXPECT_EQ(view, copy.View(s, q, n, 0.002)) << k;
+      emptied += view == ScanView::kEmpty && plain.View(s, q, n, 0.002) == ScanView::kSeen;
+    }
+  }
+  EXPECT_GT(emptied, scene.samples.points.size() / 10);
+}
+
 TEST(JointSweepTest, SameResultForAnyThreadCount) {
   const SweepScene scene = ScanLink(testing_util::LinkMesh());
   const int threads = omp_get_max_threads();
