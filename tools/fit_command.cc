@@ -304,11 +304,11 @@ int RunFit(const Command& command) {
       unobservable.c_str());
   std::printf(
       "time: edges %.2f s, base rough %.2f s, base precise %.2f s, chain %.2f s, stations "
-      "%.2f s, %s %.2f s (of these, checking the alternatives %.2f s), total %.2f s (load "
-      "%.2f s)\n",
+      "%.2f s, %s %.2f s (of these, checking the alternatives %.2f s), mixed pixels %.2f s, "
+      "total %.2f s (load %.2f s)\n",
       fit.timings.edges, fit.timings.base_rough, fit.timings.base_precise, fit.timings.chain,
       fit.timings.stations, options.refinement.chain.refine ? "refine" : "covariance",
-      fit.timings.refine, fit.timings.alternatives, total, load_seconds);
+      fit.timings.refine, fit.timings.alternatives, fit.timings.mixed_pixels, total, load_seconds);
   return kExitOk;
 }
 

@@ -72,18 +72,21 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
     if (progress) progress("mixed pixels: " + std::to_string(mixed_pixels) + " removed");
   }
   const ScanSet& scans = options.remove_mixed_pixels ? without_mixed : written_scans;
+  const double mixed_seconds = Since(start);
 
   // Sec. 4: edge weights and normals, when the weighting uses them.
+  const auto edges_start = std::chrono::steady_clock::now();
   EdgeDetectionResult edges;
   if (!options.uniform_weights) {
     if (progress) progress("edges: detecting on " + std::to_string(scans.TotalValid()) + " points");
     EDGEFIT_RETURN_IF_ERROR(DetectEdges(scans, options.edges, &edges));
   }
-  const double edge_seconds = Since(start);
+  const double edge_seconds = Since(edges_start);
   EDGEFIT_RETURN_IF_ERROR(FitWithEdges(model, scans, edges, options, progress, result));
   result->mixed_pixels = mixed_pixels;
   result->timings.edges = edge_seconds;
-  result->timings.total += edge_seconds;
+  result->timings.mixed_pixels += mixed_seconds;
+  result->timings.total += edge_seconds + mixed_seconds;
   return Status::Ok();
 }
 
@@ -234,7 +237,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
 
   // Extensions: the stations registered to the fitted model, then the whole
   // chain at once on them, and its covariance.
-  const CellMask mixed = RefinementMissingCells(work, options, say);
+  const CellMask mixed = RefinementMissingCells(work, options, say, result);
   if (align_stations) {
     EDGEFIT_RETURN_IF_ERROR(
         AlignStationsStage(model, &own, mixed, &search, weights, cad, options, say, result));
@@ -292,7 +295,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   resolved = model.ResolveDependentJoints(&refit.q);
   result->q = refit.q;
   const CoveringSummary first_coverings = result->coverings;
-  const CellMask clean_mixed = RefinementMissingCells(clean_scans, options, say);
+  const CellMask clean_mixed = RefinementMissingCells(clean_scans, options, say, result);
   EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, clean_scans, clean_mixed, &clean_search, weights,
                                            cad, options, say, result, &covered));
   result->coverings = first_coverings;  // the cells left out of the second pass

@@ -24,13 +24,15 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
 }
 
 CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
-                                const ProgressFn& say) {
+                                const ProgressFn& say, FitResult* result) {
   if (!options.refinement.chain.refine || !options.refine_without_mixed_pixels ||
       options.remove_mixed_pixels) {
     return CellMask();
   }
+  const auto start = std::chrono::steady_clock::now();
   size_t mixed_pixels = 0;
   CellMask mixed = FindMixedPixels(scans, options.mixed_pixels, &mixed_pixels);
+  result->timings.mixed_pixels += Since(start);
   say("chain: " + std::to_string(mixed_pixels) + " mixed pixels left out of the refinement");
   return mixed;
 }

@@ -254,7 +254,8 @@ json FitTimingsJson(const FitTimings& timings) {
           {"base_precise", timings.base_precise},
           {"chain", timings.chain},
           {"refine", timings.refine},
-          {"alternatives", timings.alternatives}};
+          {"alternatives", timings.alternatives},
+          {"mixed_pixels", timings.mixed_pixels}};
 }
 
 json BaseStdJson(const ChainRefinementSummary& chain) {

@@ -52,9 +52,9 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
 // The cells of `scans` the whole-chain refinement takes as missing: their
 // mixed pixels (FitOptions::refine_without_mixed_pixels), found once per
 // scan set (they do not move with the stations' poses); empty when the
-// refinement keeps them.
+// refinement keeps them. Its time is added to result->timings.mixed_pixels.
 CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
-                                const ProgressFn& say);
+                                const ProgressFn& say, FitResult* result);
 
 // The whole chain refined at once (options.refinement), or its covariance
 // alone, from result->T_world_base and result->q, in place; then, for

@@ -40,9 +40,11 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   EXPECT_EQ(result["joint_types"]["joint_1"], "revolute");
   EXPECT_EQ(result["joint_types"]["piston_joint"], "prismatic");
   for (const char* stage : {"load", "edges", "base_rough", "base_precise", "chain", "refine",
-                            "alternatives", "total"}) {
+                            "alternatives", "mixed_pixels", "total"}) {
     EXPECT_TRUE(result["timing_s"].contains(stage)) << stage;
   }
+  // The refinement's mask of the mixed pixels (on by default) was found.
+  EXPECT_GT(result["timing_s"]["mixed_pixels"].get<double>(), 0.0);
   // The alternatives' checks are a part of the stages they run in.
   EXPECT_LE(result["timing_s"]["alternatives"].get<double>(),
             result["timing_s"]["base_precise"].get<double>() +

@@ -71,6 +71,10 @@ struct FitTimings {
   // base and chain fitted from each alternative rough pose, every joint
   // swept again at the final values, the pinning test) [s].
   double alternatives = 0.0;
+  // The mixed-pixel detector, each time it runs: their removal
+  // (remove_mixed_pixels) or the whole-chain refinement's mask of them
+  // (refine_without_mixed_pixels) [s].
+  double mixed_pixels = 0.0;
 };
 
 struct FitResult {
