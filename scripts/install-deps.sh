@@ -15,6 +15,7 @@ packages=(
   libomp-dev libembree-dev nlohmann-json3-dev libfast-float-dev libtinyxml2-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
+  python3
 )
 # The fit report embeds three.js; its test opens it in headless Chromium.
 packages+=(libjs-three)

@@ -6,14 +6,13 @@ if(TARGET edgefit)
                    LIBS nlohmann_json::nlohmann_json)
   target_compile_definitions(cli_test PRIVATE EDGEFIT_BINARY="$<TARGET_FILE:edgefit>")
   add_dependencies(cli_test edgefit)
-  # edgefit batch and bench on a real one-node Slurm (scripts/slurm/). Not
-  # under the sanitizers: it runs the same code as cli_test, through Slurm.
-  if(NOT EDGEFIT_SANITIZE)
-    add_test(NAME slurm_batch_test
-             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/slurm/slurm_batch_test.sh
-                     $<TARGET_FILE:edgefit> ${PROJECT_SOURCE_DIR})
-    set_tests_properties(slurm_batch_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 900 RUN_SERIAL TRUE)
-  endif()
+  # edgefit batch and bench on a real one-node Slurm (scripts/slurm/): e2e,
+  # it runs the same code as cli_test, through Slurm.
+  add_test(NAME slurm_batch_test
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/slurm/slurm_batch_test.sh
+                   $<TARGET_FILE:edgefit> ${PROJECT_SOURCE_DIR})
+  set_tests_properties(slurm_batch_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600 RUN_SERIAL TRUE
+                                                    LABELS e2e)
 endif()
 
 # cmake --install gives a package that a small consumer project and
@@ -25,4 +24,4 @@ add_test(NAME install_consumer_test
                  -DGENERATOR=${CMAKE_GENERATOR}
                  -DSANITIZE=${EDGEFIT_SANITIZE}
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/install/run_consumer_test.cmake)
-set_tests_properties(install_consumer_test PROPERTIES TIMEOUT 600)
+set_tests_properties(install_consumer_test PROPERTIES TIMEOUT 300 LABELS unit)

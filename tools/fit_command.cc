@@ -264,7 +264,8 @@ int RunFit(const Command& command) {
                 FLAGS_truth.c_str());
   }
   if (scored_asset < 0) {
-    for (size_t j = 0; j < model.joints().size(); ++j) {
+    for (const int index : model.joint_order()) {  // parents first: base to tool
+      const size_t j = static_cast<size_t>(index);
       const Joint& joint = model.joints()[j];
       if (!joint.IsMoving()) continue;
       const bool prismatic = joint.type == JointType::kPrismatic;

@@ -71,7 +71,8 @@ Status CompareWithTruth(const KinematicModel& model, const std::vector<double>& 
     }
   }
   std::vector<double> q_truth(model.joints().size(), 0.0);
-  for (size_t j = 0; j < model.joints().size(); ++j) {
+  for (const int index : model.joint_order()) {  // parents first: base to tool
+    const size_t j = static_cast<size_t>(index);
     const Joint& joint = model.joints()[j];
     if (!joint.IsMoving()) continue;
     const auto it = std::find_if(truth_named.begin(), truth_named.end(),

@@ -18,6 +18,7 @@
 #include "solvers/joints/joint_sweep.h"
 #include "solvers/joints/observability.h"
 #include "solvers/refinement/coverings.h"
+#include "solvers/registration/scan_visibility.h"
 #include "solvers/registration/weighted_icp.h"
 
 namespace edgefit {
@@ -34,6 +35,68 @@ inline double Since(std::chrono::steady_clock::time_point start) {
 struct CadSamples {
   std::vector<SurfaceSamples> icp, sweep, chain;
 };
+
+// What the stages search and fit with on one scan set: the nearest scan
+// points, which samples the scans see, the weighted ICP and the Eq. (9)
+// sweep. Borrows `scans` (and the weights and normals): searches built on
+// a scan set are stale once its stations move.
+struct ScanTools {
+  ScanTools(const ScanSet* scans, const CellWeights* weights,
+            const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner,
+            const ResidualOptions& residuals)
+      : search(scans, weights),
+        visibility(scans),
+        icp(scans, &search, normals_scanner, residuals),
+        sweep(&search.lattice(), &visibility) {}
+  CorrespondenceSearch search;
+  const ScanVisibility visibility;
+  WeightedIcp icp;
+  const JointSweep sweep;
+};
+
+// A fit of the base and the chain from one rough base pose.
+struct ChainAttempt {
+  Pose T_world_base = Pose::Identity();
+  WeightedIcpSummary base;  // the base's precise ICP (Sec. 5.1.2)
+  std::vector<double> q;
+  std::vector<JointRecord> records;
+  double loss = 0.0;           // Eq. (9) of the whole model
+  bool base_mismatch = false;  // FitOptions::min_base_inlier_share: the chain was not fitted
+};
+
+// Sec. 5.1.2 and 5.2-5.3 from T_rough: the base's precise weighted ICP
+// (base_samples: the base body's), then every joint, parents first
+// (`chain`, on the scans of `icp`). A base whose inlier share is below
+// FitOptions::min_base_inlier_share is a mismatch: the chain is not fitted
+// and the loss is infinite. Adds to result->timings.
+Status FitChainFrom(const KinematicModel& model, const Body& base,
+                    const SurfaceSamples& base_samples, const Pose& T_rough,
+                    const FitOptions& options, WeightedIcp* icp, ChainFitter* chain,
+                    const ProgressFn& say, FitResult* result, ChainAttempt* attempt);
+
+// FitChainFrom from the first rough pose and from every alternative
+// standing within BaseHypothesesOptions::instance_separation of it (others
+// are another machine's place); the lowest Eq. (9) loss of the whole model
+// wins (result->base_rough records the rough pose it came from).
+Status FitChainFromRoughPoses(const KinematicModel& model, const Body& base,
+                              const SurfaceSamples& base_samples, const std::vector<Pose>& roughs,
+                              const FitOptions& options, WeightedIcp* icp, ChainFitter* chain,
+                              const ProgressFn& say, FitResult* result, ChainAttempt* best);
+
+// Extension: the sequential fit chose every joint's basin on stations that
+// did not agree, or with coverings hiding much of a link: the chain again
+// from result->T_world_base on `scans` (the aligned stations) without the
+// `covered` cells, then the refinement, the final basins and the verdict
+// there. `first_pass`: the tools on `scans` with the coverings, whose
+// sweep tells what the coverings hide. result->coverings keeps the first
+// pass's.
+Status RefitWithoutCoverings(const KinematicModel& model, const ScanSet& scans,
+                             const CellMask& covered, const ScanTools& first_pass,
+                             const Body& base, const SurfaceSamples& base_samples,
+                             const CadSamples& cad, const CellWeights* weights,
+                             const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner,
+                             bool covered_link, const FitOptions& options, const ProgressFn& say,
+                             FitResult* result);
 
 // Sec. 5.1.1 / 6.1: the rough base poses to fit from, best first, into
 // *roughs (result->base_rough, arm_tips and base_rough_method record how):

@@ -269,8 +269,12 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
   nlohmann::json edge_map;
   const bool has_edges = EdgeMap(scans, options, &edges, &edge_map);
   nlohmann::json joint_types = nlohmann::json::object();
-  for (const Joint& j : model.joints()) {
-    if (j.IsMoving()) joint_types[j.name] = j.type == JointType::kPrismatic ? "prismatic" : "revolute";
+  nlohmann::json joint_order = nlohmann::json::array();  // parents first: base to tool
+  for (const int index : model.joint_order()) {
+    const Joint& j = model.joints()[static_cast<size_t>(index)];
+    if (!j.IsMoving()) continue;
+    joint_types[j.name] = j.type == JointType::kPrismatic ? "prismatic" : "revolute";
+    joint_order.push_back(j.name);
   }
   nlohmann::json link_names = nlohmann::json::array();
   for (const Link& l : model.links()) link_names.push_back(l.name);
@@ -289,6 +293,7 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
       {"scanners", scanners},
       {"stations", stations},
       {"joint_types", joint_types},
+      {"joint_order", joint_order},
       {"link_names", link_names},
       {"links", LinkMeshes(model, T_world_link, origin)},
       {"edge_map", edge_map},

@@ -81,7 +81,7 @@ if (result.base) {
   const errors = result.errors ? result.errors.joints : null;
   const head = ['joint', 'value', 'verdict', 'std', ...(errors ? ['error'] : [])];
   const tr = el('tr'); head.forEach(h => tr.append(el('th', {}, h))); table.append(tr);
-  for (const name of Object.keys(result.joints || {})) {
+  for (const name of data.joint_order.filter(n => n in (result.joints || {}))) {
     const prismatic = data.joint_types[name] === 'prismatic';
     const f = prismatic ? 1e3 : 180 / Math.PI, unit = prismatic ? ' mm' : '°';
     const st = (result.joint_status || {})[name];

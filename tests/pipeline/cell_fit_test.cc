@@ -23,14 +23,7 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-#if defined(__SANITIZE_ADDRESS__)
-#define SKIP_UNDER_ASAN() GTEST_SKIP() << "three whole fits: release suite only"
-#else
-#define SKIP_UNDER_ASAN() (void)0
-#endif
-
 TEST(CellFitTest, FindsBothRobotsAndLeavesTheOtherMachine) {
-  SKIP_UNDER_ASAN();
   KinematicModel robot, balancer;
   std::vector<double> q_left, q_right;
   testing_util::LoadBundledRobotWithGun("joint_1=0.4,joint_2=0.5,joint_3=-0.2,joint_5=0.7,gun_joint=0.05", &robot,

@@ -43,10 +43,6 @@ TEST(NegativeFitTest, ScanWithoutTheRobotIsNotOk) {
 
 // A scan of another robot (the two-axis balancer arm of assets/models).
 TEST(NegativeFitTest, ScanOfAnotherRobotIsNotOk) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the release suite checks it; under the sanitizers it runs the stages "
-                  "ScanWithoutTheRobotIsNotOk runs, for over 4 minutes";
-#endif
   const RobotScene& s = GetRobotScene();
   KinematicModel other;
   ASSERT_TRUE(
@@ -69,10 +65,6 @@ TEST(NegativeFitTest, ScanOfAnotherRobotIsNotOk) {
 // The robot carries another end effector (a 0.2 m box tool, not the gun):
 // the gun's links do not match, and the message says so.
 TEST(NegativeFitTest, AnotherEndEffectorIsNotOk) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the release suite checks it; under the sanitizers a fit of the same "
-                  "robot exercises no other code";
-#endif
   const RobotScene& s = GetRobotScene();
   const std::string assets = std::string(EDGEFIT_SOURCE_DIR) + "/assets/";
   AttachSpec tool;
@@ -96,10 +88,6 @@ TEST(NegativeFitTest, AnotherEndEffectorIsNotOk) {
 
 // Clutter shaped like the base: its link alone in the place.
 TEST(NegativeFitTest, TheBaseAloneIsNotOk) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the release suite checks it; under the sanitizers it runs the stages "
-                  "ScanWithoutTheRobotIsNotOk runs";
-#endif
   const RobotScene& s = GetRobotScene();
   Scene all;
   AddModelToScene(s.model, s.model.ForwardKinematics(s.q, s.T_world_base), &all);
@@ -116,10 +104,6 @@ TEST(NegativeFitTest, TheBaseAloneIsNotOk) {
 // Half the robot out of every station's window (every point beyond the
 // vertical plane through the base blanked): ok only if nothing is off.
 TEST(NegativeFitTest, HalfOutOfTheWindowIsNotOkOrRight) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the release suite checks it; under the sanitizers a fit of the same "
-                  "scene exercises no other code";
-#endif
   const RobotScene& s = GetRobotScene();
   ScanSet half = s.scans;
   const double x_cut = s.T_world_base.translation().x();

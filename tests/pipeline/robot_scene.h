@@ -1,7 +1,8 @@
-// The small virtual scene of the robot pipeline's tests: the bundled robot
-// with its weld gun and accessories (harnesses, clamps) in one posture, a
-// floor and clutter, 3 scanners, 4 mm spacing (about 1.9 M points), 1 mm
-// noise; built once per test binary.
+// The virtual scene of the robot pipeline's tests: the bundled robot with
+// its weld gun and accessories (harnesses, clamps) in one posture, a floor
+// and clutter, 3 scanners, 1 mm noise. At 4 mm spacing (about 1.9 M points,
+// GetRobotScene, built once per test binary) for the end-to-end tests; at
+// 10 mm for their small-scene twins (small_scene_fit_test).
 #ifndef EDGEFIT_TESTS_PIPELINE_ROBOT_SCENE_H_
 #define EDGEFIT_TESTS_PIPELINE_ROBOT_SCENE_H_
 
@@ -29,6 +30,7 @@ struct RobotScene {
   ScanSet scans;                              // robot, gun, accessories, floor, clutter
   std::vector<std::vector<uint16_t>> labels;  // of scans, per cell (scene.h)
   ScanSet empty_scans;  // the same place without the robot and its accessories
+  double spacing = 0.004;  // [m]
 };
 
 // `parts` (equipment in the world frame, possibly none) in the scene's
@@ -39,7 +41,7 @@ inline VirtualScan ScanInThePlace(const RobotScene& s, Scene parts) {
   environment.seed = 3;
   AddEnvironment(box, environment, &parts);
   VirtualScanOptions options;
-  options.spacing = 0.004;
+  options.spacing = s.spacing;
   options.seed = 11;
   options.asset_box_world = box;
   VirtualScan scan;
@@ -47,28 +49,32 @@ inline VirtualScan ScanInThePlace(const RobotScene& s, Scene parts) {
   return scan;
 }
 
+// The scene at `spacing` [m]; the caller owns it.
+inline RobotScene* MakeRobotScene(double spacing) {
+  auto* out = new RobotScene;
+  out->spacing = spacing;
+  LoadBundledRobotWithGun(
+      "joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,joint_6=0.6,gun_joint=0.09",
+      &out->model, &out->q);
+  out->T_world_base = PoseFromXyzRpy({0.5, -0.2, 0.0}, {0.0, 0.0, 15.0 * M_PI / 180.0});
+  ScannerPlacementOptions placement;
+  placement.seed = 5;
+  out->scanners = PlaceScanners(out->model.BoundingBox(out->q, out->T_world_base), placement);
+  const std::vector<Pose> T_world_link = out->model.ForwardKinematics(out->q, out->T_world_base);
+  Scene robot;
+  AddModelToScene(out->model, T_world_link, &robot);
+  AccessoryOptions accessories;
+  accessories.seed = 2;
+  AddAccessories(out->model, out->q, T_world_link, accessories, &robot);
+  VirtualScan scan = ScanInThePlace(*out, std::move(robot));
+  out->labels = std::move(scan.labels);
+  out->scans = std::move(scan.scans);
+  out->empty_scans = ScanInThePlace(*out, Scene()).scans;
+  return out;
+}
+
 inline const RobotScene& GetRobotScene() {
-  static RobotScene* scene = [] {
-    auto* out = new RobotScene;
-    LoadBundledRobotWithGun(
-        "joint_1=0.7,joint_2=0.45,joint_3=0,joint_4=-0.5,joint_5=0.6,joint_6=0.6,gun_joint=0.09",
-        &out->model, &out->q);
-    out->T_world_base = PoseFromXyzRpy({0.5, -0.2, 0.0}, {0.0, 0.0, 15.0 * M_PI / 180.0});
-    ScannerPlacementOptions placement;
-    placement.seed = 5;
-    out->scanners = PlaceScanners(out->model.BoundingBox(out->q, out->T_world_base), placement);
-    const std::vector<Pose> T_world_link = out->model.ForwardKinematics(out->q, out->T_world_base);
-    Scene robot;
-    AddModelToScene(out->model, T_world_link, &robot);
-    AccessoryOptions accessories;
-    accessories.seed = 2;
-    AddAccessories(out->model, out->q, T_world_link, accessories, &robot);
-    VirtualScan scan = ScanInThePlace(*out, std::move(robot));
-    out->labels = std::move(scan.labels);
-    out->scans = std::move(scan.scans);
-    out->empty_scans = ScanInThePlace(*out, Scene()).scans;
-    return out;
-  }();
+  static RobotScene* scene = MakeRobotScene(0.004);
   return *scene;
 }
 

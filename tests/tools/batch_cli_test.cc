@@ -7,6 +7,7 @@
 
 namespace {
 
+using edgefit_cli_test::CliE2eTest;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
@@ -142,10 +143,7 @@ namespace {
 
 // A row with a cell's models runs edgefit cell; --merge reads its instances
 // (each result inline, or from --out_dir) and their errors against the truth.
-TEST_F(CliTest, BatchRunsACellRowAndMergesItsInstances) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "whole cell fits: release suite only";
-#endif
+TEST_F(CliE2eTest, BatchRunsACellRowAndMergesItsInstances) {
   const std::string scene = Write(
       "scene.json", "{\"assets\": [\n {\"name\": \"a\", \"urdf\": \"" + kModel +
                         "\", \"joints\": \"joint_1=20deg,joint_2=-0.3\", \"base\": [-1.0, 0, 0]},\n"

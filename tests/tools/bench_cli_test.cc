@@ -9,6 +9,7 @@
 
 namespace {
 
+using edgefit_cli_test::CliE2eTest;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
@@ -55,12 +56,7 @@ TEST_F(CliTest, BenchPrintsThePapersTables) {
   }
 }
 
-TEST_F(CliTest, BenchRunsTheProductOfItsAblationAxes) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the release suite checks it; under the sanitizers its two conveyor fits "
-                  "took 600 s, the test's limit (104 s in the release suite), and exercise no "
-                  "other code than conveyance_fit_test's";
-#endif
+TEST_F(CliE2eTest, BenchRunsTheProductOfItsAblationAxes) {
   const RunResult r =
       Run("bench --assets=conveyor --conveyor_urdf=" + kAssets +
           "conveyor/conveyor.urdf --conveyor_postures=" + kAssets +
@@ -109,11 +105,7 @@ TEST_F(CliTest, BenchRunsTheProductOfItsAblationAxes) {
 // a quarter turn: fitted from that rough pose alone, `home` came out 90
 // degrees off and said ok. The near-equal rough pose fitted through the
 // whole chain tells them apart.
-TEST_F(CliTest, BenchTwoStationsDoNotTurnTheBase) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the release suite checks it; under the sanitizers a robot fit exercises no "
-                  "other code than pipeline_test's";
-#endif
+TEST_F(CliE2eTest, BenchTwoStationsDoNotTurnTheBase) {
   const RunResult r = Run("bench --assets=robot --robot_urdf=" + kAssets +
                           "robot/robot.urdf --robot_attach=" + kAssets +
                           "robot/weld_gun.urdf@tool0 --robot_postures=" + kAssets +

@@ -37,11 +37,10 @@ class CellCliTest : public CliTest {
                                     "balancer_arm.urdf\", \"count\": " + count + "}]}\n");
   }
 };
+// Whole cell fits: the e2e label (cli_fixture.h, CliE2eTest).
+class CellCliE2eTest : public CellCliTest {};
 
-TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "three whole fits: release suite only";
-#endif
+TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
   const RunResult scan = Run("scan --scene=" + Scene() +
                              " --scanners=3 --spacing_mm=6 --seed=3 --out=" + Path("cell.e57") +
                              " --truth=" + Path("truth.json"));
@@ -89,10 +88,7 @@ TEST_F(CellCliTest, FindsBothArmsAndWritesTheBackground) {
 
 // --roi: the arms are looked for in the box around "a" only; "b" stays in
 // the background, and a's points leave the whole scan.
-TEST_F(CellCliTest, TheRegionOfInterestLimitsTheSearch) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "a whole fit: release suite only";
-#endif
+TEST_F(CellCliE2eTest, TheRegionOfInterestLimitsTheSearch) {
   const RunResult scan = Run("scan --scene=" + Scene() +
                              " --scanners=3 --spacing_mm=6 --seed=3 --out=" + Path("cell.e57") +
                              " --truth=" + Path("truth.json"));
@@ -137,10 +133,7 @@ TEST_F(CellCliTest, TheRegionOfInterestLimitsTheSearch) {
 // standing behind arm "a" keeps 44 % of the points a scan of it alone has
 // (56 % of its base's cells, 38 % of its column's). Both are found, none
 // is invented, and the hidden one is fitted.
-TEST_F(CellCliTest, FindsAnArmHalfHiddenBehindAnother) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "two whole fits: release suite only";
-#endif
+TEST_F(CellCliE2eTest, FindsAnArmHalfHiddenBehindAnother) {
   const std::string arm = "{\"urdf\": \"" + kModels + "balancer_arm.urdf\", ";
   const std::string a = arm + "\"name\": \"a\", \"joints\": \"joint_1=20deg,joint_2=-0.3\", " +
                         "\"base\": [0, 0, 0]}";

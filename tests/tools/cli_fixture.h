@@ -105,6 +105,11 @@ class CliTest : public ::testing::Test {
   fs::path dir_;
 };
 
+// The CLI tests that run whole fits of full scenes: the ctest label e2e
+// (tests/CMakeLists.txt gives it to every suite named *E2eTest), so the
+// release half of CI runs them and the sanitizer half does not.
+class CliE2eTest : public CliTest {};
+
 }  // namespace edgefit_cli_test
 
 #endif  // EDGEFIT_TESTS_TOOLS_CLI_FIXTURE_H_
