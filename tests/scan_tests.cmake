@@ -5,5 +5,5 @@ target_include_directories(edgefit_test_synthetic PUBLIC ${CMAKE_CURRENT_SOURCE_
 edgefit_set_warnings(edgefit_test_synthetic)
 
 edgefit_add_test(scan_test
-  SOURCES scan/angular_lattice_test.cc scan/lattice_estimation_test.cc
+  SOURCES scan/scan_lattice_test.cc scan/projective_lattice_test.cc scan/lattice_estimation_test.cc
   LIBS edgefit::scan edgefit_test_synthetic)

@@ -114,9 +114,7 @@ int RunCell(const Command& command) {
     models.push_back(std::move(m));
   }
   ScanSet scans;
-  for (const std::string& path : SplitList(FLAGS_scan)) {
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
-  }
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, &scans));
   std::vector<CellTruthAsset> truth;
   if (!FLAGS_truth.empty())
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));
@@ -280,7 +278,7 @@ Command CellCommand() {
       "  edgefit cell --models=examples/cell/models.json --scan=cell.e57 "
       "--truth=cell_truth.json \\\n"
       "    --out=cell_result.json --out_background=cell_rest.e57",
-      WithFitOptionFlags({"models", "scan", "out", "out_dir", "out_background",
+      WithFitOptionFlags({"models", "scan", "camera_info", "depth_scale", "out", "out_dir", "out_background",
                           "background_distance_mm", "truth", "roi", "threads", "seed"}),
       &RunCell};
 }

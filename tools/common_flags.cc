@@ -1,8 +1,18 @@
 #include "common_flags.h"
 
+#include "command_line.h"
+#include "edgefit/io/scan_io.h"
 #include "edgefit/scanner/asset_scan.h"
 
-DEFINE_string(scan, "", "Scan file(s): .ptx, .pcd, .ply or .e57; several as a comma list.");
+DEFINE_string(scan, "",
+              "Scan file(s): .ptx, .pcd, .ply or .e57, or a depth camera's 16-bit depth .png "
+              "(with --camera_info); several as a comma list.");
+DEFINE_string(camera_info, "",
+              "A depth camera's intrinsics, a ROS camera_info YAML file (sensor_msgs/CameraInfo "
+              "or camera_calibration_parsers layout): a depth PNG needs it; organized scans of "
+              "its width x height take its projective lattice instead of one estimated from "
+              "their points.");
+DEFINE_double(depth_scale, 0.001, "Depth PNG: metres per unit of its 16-bit values (ROS: mm).");
 DEFINE_string(urdf, "",
               "URDF of the equipment (meshes resolved relative to it or via package://).");
 DEFINE_string(attach, "",
@@ -52,6 +62,24 @@ DEFINE_bool(jackets, false,
             "Protective jackets 3-8 mm over 40-80 % of the upper arm and the forearm.");
 
 namespace edgefit::tools {
+
+Status ReadOptionsFromFlags(ReadOptions* options) {
+  if (!FLAGS_camera_info.empty()) {
+    EDGEFIT_RETURN_IF_ERROR(ReadCameraInfo(FLAGS_camera_info, &options->camera));
+  }
+  if (!(FLAGS_depth_scale > 0.0)) return Status::Error("--depth_scale must be > 0 [m per unit]");
+  options->depth_scale = FLAGS_depth_scale;
+  return Status::Ok();
+}
+
+Status ReadScanList(const std::string& list, ScanSet* scans) {
+  ReadOptions options;
+  EDGEFIT_RETURN_IF_ERROR(ReadOptionsFromFlags(&options));
+  for (const std::string& path : SplitList(list)) {
+    EDGEFIT_RETURN_IF_ERROR(ReadScans(path, options, scans));
+  }
+  return Status::Ok();
+}
 
 Status SensorOptionsFromFlags(const std::string& sensor, AssetScanOptions* options) {
   EDGEFIT_RETURN_IF_ERROR(ApplySensorPreset(sensor, options).WithContext("--sensor"));

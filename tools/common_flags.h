@@ -8,6 +8,8 @@
 #include <string>
 
 DECLARE_string(scan);
+DECLARE_string(camera_info);
+DECLARE_double(depth_scale);
 DECLARE_string(urdf);
 DECLARE_string(attach);
 DECLARE_bool(json);
@@ -30,8 +32,15 @@ DECLARE_bool(jackets);
 
 namespace edgefit {
 struct AssetScanOptions;
+struct ReadOptions;
+struct ScanSet;
 class Status;
 namespace tools {
+// The scan readers' options: --camera_info (read here), --depth_scale.
+Status ReadOptionsFromFlags(ReadOptions* options);
+// Every file of the comma list `list` (--scan) read with
+// ReadOptionsFromFlags, appended to *scans.
+Status ReadScanList(const std::string& list, ScanSet* scans);
 // Applies `sensor` (ApplySensorPreset), then --beam (when the sensor has a
 // footprint) and --jackets.
 Status SensorOptionsFromFlags(const std::string& sensor, AssetScanOptions* options);

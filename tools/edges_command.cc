@@ -112,9 +112,7 @@ int RunEdges(const Command& command) {
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   const auto start = std::chrono::steady_clock::now();
   ScanSet set;
-  for (const std::string& path : SplitList(FLAGS_scan)) {
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &set));
-  }
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, &set));
   LabelFile labels;
   if (!FLAGS_labels.empty()) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadLabels(FLAGS_labels, &labels));
@@ -255,7 +253,7 @@ Command EdgesCommand() {
           "Example:\n"
           "  edgefit edges --scan=robot.ptx --labels=robot_labels.bin --out_weights=w.bin \\\n"
           "    --out_json=edges.json --out_ply=edges.ply",
-          {"scan", "out_weights", "out_json", "out_ply", "labels", "w_high", "normal_radius_mm",
+          {"scan", "camera_info", "depth_scale", "out_weights", "out_json", "out_ply", "labels", "w_high", "normal_radius_mm",
            "tau_align", "r_min_mm", "r_max_mm", "tau_dot", "region_radius_mm", "tau_region",
            "tau_min", "remove_mixed_pixels", "mixed_pixel_tolerance_mm",
            "mixed_pixel_lines", "mixed_pixel_neighbour_lines", "threads"},

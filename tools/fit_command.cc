@@ -140,9 +140,7 @@ int RunFit(const Command& command) {
   FitOptions options;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitOptionsFromFlags(kind, &options));
   ScanSet scans;
-  for (const std::string& path : SplitList(FLAGS_scan)) {
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, ReadOptions(), &scans));
-  }
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, &scans));
   std::vector<CellTruthAsset> truth;  // one asset, or a cell's (edgefit scan --scene)
   if (!FLAGS_truth.empty())
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));
@@ -332,7 +330,7 @@ Command FitCommand() {
       "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
       "    --scan=robot.ptx --truth=robot_truth.json --out=result.json\n"
       "  edgefit fit --urdf=assets/conveyor/conveyor.urdf --scan=conveyor.ptx --out=result.json",
-      WithFitOptionFlags({"urdf", "attach", "scan", "out", "kind", "init", "roi", "truth",
+      WithFitOptionFlags({"urdf", "attach", "scan", "camera_info", "depth_scale", "out", "kind", "init", "roi", "truth",
                           "out_joint_states", "out_urdf", "out_ply", "out_report", "out_background",
                           "background_distance_mm", "threads", "seed"}),
       &RunFit};

@@ -51,29 +51,44 @@ json ScanJson(const OrganizedScan& scan, const std::string& source, int index) {
                                : "row_major"},
             {"bytes_per_cell", scan.BytesPerCell()},
             {"T_world_scanner", PoseJson(scan.T_world_scanner())}};
-  const AngularLattice& lattice = scan.lattice();
-  if (lattice.valid()) {
+  const ScanLattice& lattice = scan.lattice();
+  if (!lattice.valid()) {
+    j["lattice"] = nullptr;
+  } else if (lattice.model() == ScanLattice::Model::kProjective) {
+    const PinholeCamera& c = lattice.camera();
+    j["lattice"] = {{"model", lattice.ModelName()},
+                    {"fx", c.fx},
+                    {"fy", c.fy},
+                    {"cx", c.cx},
+                    {"cy", c.cy},
+                    {"distortion", c.distortion},
+                    {"row_step_deg", lattice.row_step() * kRadToDeg},
+                    {"col_step_deg", lattice.col_step() * kRadToDeg}};
+  } else {
     const Eigen::Vector3d axis = lattice.R_scanner_lattice().col(2);
     j["lattice"] = {
-        {"azimuth_step_deg", lattice.azimuth_step() * kRadToDeg},
-        {"elevation_step_deg", lattice.elevation_step() * kRadToDeg},
+        {"model", lattice.ModelName()},
+        {"azimuth_step_deg", lattice.col_step() * kRadToDeg},
+        {"elevation_step_deg", lattice.row_step() * kRadToDeg},
+        {"row_step_deg", lattice.row_step() * kRadToDeg},
+        {"col_step_deg", lattice.col_step() * kRadToDeg},
         {"azimuth_range_deg",
          {lattice.azimuth(0) * kRadToDeg, lattice.azimuth(lattice.cols() - 1) * kRadToDeg}},
         {"elevation_range_deg",
          {lattice.elevation(0) * kRadToDeg, lattice.elevation(lattice.rows() - 1) * kRadToDeg}},
         {"tilt_deg", std::acos(std::min(1.0, std::abs(axis.z()))) * kRadToDeg}};
-  } else {
-    j["lattice"] = nullptr;
   }
   return j;
 }
 
 int RunScanInfo(const Command& command) {
+  ReadOptions read_options;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadOptionsFromFlags(&read_options));
   json out = {{"files", json::array()}, {"scans", json::array()}};
   size_t total = 0, total_valid = 0;
   for (const std::string& path : SplitList(FLAGS_scan)) {
     ScanSet set;
-    const Status status = ReadScans(path, ReadOptions(), &set);
+    const Status status = ReadScans(path, read_options, &set);
     if (!status.ok()) return BadInput(command, status);
     out["files"].push_back(path);
     for (size_t i = 0; i < set.scans.size(); ++i) {
@@ -95,10 +110,15 @@ int RunScanInfo(const Command& command) {
                 100.0 * s["valid"].get<double>() /
                     std::max(1.0, s["rows"].get<double>() * s["cols"].get<double>()),
                 s["organized"].get<bool>() ? "organized" : "unorganized");
-    if (!s["lattice"].is_null()) {
-      const json& l = s["lattice"];
-      std::printf("  lattice: azimuth step %.5f deg over [%.2f, %.2f], elevation step %.5f deg "
-                  "over [%.2f, %.2f], tilt %.3f deg\n",
+    const json& l = s["lattice"];
+    if (!l.is_null() && l["model"] == "projective") {
+      std::printf("  lattice: projective (a depth camera), fx %.3f fy %.3f cx %.3f cy %.3f px%s\n",
+                  l["fx"].get<double>(), l["fy"].get<double>(), l["cx"].get<double>(),
+                  l["cy"].get<double>(),
+                  l["distortion"] != json(std::vector<double>(8, 0.0)) ? ", with distortion" : "");
+    } else if (!l.is_null()) {
+      std::printf("  lattice: angular (a laser scanner), azimuth step %.5f deg over [%.2f, %.2f], "
+                  "elevation step %.5f deg over [%.2f, %.2f], tilt %.3f deg\n",
                   l["azimuth_step_deg"].get<double>(), l["azimuth_range_deg"][0].get<double>(),
                   l["azimuth_range_deg"][1].get<double>(), l["elevation_step_deg"].get<double>(),
                   l["elevation_range_deg"][0].get<double>(),
@@ -249,12 +269,12 @@ Command InfoCommand() {
   return {"info",
           "summary of a scan file (grids, valid points, lattice) or a URDF model",
           "Usage:\n"
-          "  edgefit info --scan=F[,F...] [--json]\n"
+          "  edgefit info --scan=F[,F...] [--camera_info=camera_info.yaml] [--json]\n"
           "  edgefit info --urdf=F [--attach=eef.urdf@link[:x,y,z,r,p,y]] [--json]\n"
           "Examples:\n"
           "  edgefit info --scan=assets/samples/two_scans.ptx\n"
           "  edgefit info --urdf=robot.urdf --attach=gun.urdf@tool0 --json",
-          {"scan", "urdf", "attach", "json"},
+          {"scan", "camera_info", "depth_scale", "urdf", "attach", "json"},
           &RunInfo};
 }
 

@@ -166,8 +166,8 @@ Status FitConveyanceBaseRough(const ScanSet& scans, double floor_z, const Kinema
   std::vector<float> areas;  // spacing^2 at each point's range
   Eigen::AlignedBox2d extent;
   for (const OrganizedScan& scan : scans.scans) {
-    const double step = std::max(std::abs(scan.lattice().elevation_step()),
-                                 std::abs(scan.lattice().azimuth_step()));
+    const double step = std::max(std::abs(scan.lattice().row_step()),
+                                 std::abs(scan.lattice().col_step()));
     for (size_t i = 0; i < scan.size(); ++i) {
       if (!scan.IsValid(i)) continue;
       const Eigen::Vector3d p = scan.PointWorld(i);

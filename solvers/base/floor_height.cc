@@ -19,10 +19,10 @@ bool StencilNormal(const OrganizedScan& scan, int row, int col, const FloorOptio
   const Eigen::Vector3f& p = scan.point_scanner(scan.Index(row, col));
   const float radius = static_cast<float>(options.normal_radius), range = p.norm();
   const int dr =
-      HalfWindow(radius, range, static_cast<float>(std::abs(scan.lattice().elevation_step())),
+      HalfWindow(radius, range, static_cast<float>(std::abs(scan.lattice().row_step())),
                  options.max_half_window);
   const int dc =
-      HalfWindow(radius, range, static_cast<float>(std::abs(scan.lattice().azimuth_step())),
+      HalfWindow(radius, range, static_cast<float>(std::abs(scan.lattice().col_step())),
                  options.max_half_window);
   if (row - dr < 0 || row + dr >= scan.rows() || col - dc < 0 || col + dc >= scan.cols()) {
     return false;

@@ -26,8 +26,8 @@ ScanView ScanVisibility::View(size_t s, const Eigen::Vector3d& q_world,
   if (!scan.organized() || !scan.lattice().valid()) return ScanView::kSeen;
   if (max_gap > 0.0) {
     // gap = r d / cos(theta) = r^2 d / (n . (o - q)).
-    const double step = std::max(std::abs(scan.lattice().elevation_step()),
-                                 std::abs(scan.lattice().azimuth_step()));
+    const double step = std::max(std::abs(scan.lattice().row_step()),
+                                 std::abs(scan.lattice().col_step()));
     if (to_scanner.squaredNorm() * step > max_gap * facing) return ScanView::kGrazing;
   }
   const Eigen::Vector3d q_scanner = T_scanner_world_[s] * q_world;

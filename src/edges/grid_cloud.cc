@@ -12,8 +12,8 @@ GridCloud GridCloud::FromScan(const OrganizedScan& scan) {
   cloud.rows = scan.rows();
   cloud.cols = scan.cols();
   cloud.wrap_cols = scan.lattice().full_circle();
-  cloud.row_step = static_cast<float>(std::abs(scan.lattice().elevation_step()));
-  cloud.col_step = static_cast<float>(std::abs(scan.lattice().azimuth_step()));
+  cloud.row_step = static_cast<float>(std::abs(scan.lattice().row_step()));
+  cloud.col_step = static_cast<float>(std::abs(scan.lattice().col_step()));
   const size_t n = scan.size();
   cloud.x.resize(n);
   cloud.y.resize(n);

@@ -2,6 +2,9 @@
 
 #include "edgefit/scan/lattice_estimation.h"
 
+#include <string>
+#include <utility>
+
 namespace edgefit {
 namespace io_internal {
 
@@ -10,7 +13,18 @@ Status FinishScan(const std::string& what, const ReadOptions& options, Organized
     return Status::Error(what + ": no valid points");
   }
   if (options.estimate_lattice && scan->organized()) {
-    AngularLattice lattice;
+    const CameraInfo& camera = options.camera;
+    if (!camera.empty()) {
+      if (camera.width != scan->cols() || camera.height != scan->rows()) {
+        return Status::Error(what + ": the grid is " + std::to_string(scan->cols()) + " x " +
+                             std::to_string(scan->rows()) + " cells, the camera (" +
+                             camera.source + ") " + std::to_string(camera.width) + " x " +
+                             std::to_string(camera.height) + " pixels");
+      }
+      scan->set_lattice(ScanLattice(scan->rows(), scan->cols(), camera.camera));
+      return Status::Ok();
+    }
+    ScanLattice lattice;
     const Status status = EstimateLattice(*scan, options.lattice, &lattice);
     if (!status.ok()) return Status::Error(what + ": " + status.message());
     scan->set_lattice(std::move(lattice));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "edgefit/io/depth_png.h"
 #include "edgefit/io/e57.h"
 #include "edgefit/io/pcd.h"
 #include "edgefit/io/ply.h"
@@ -11,7 +12,7 @@
 namespace edgefit {
 namespace {
 
-enum class Format { kPtx, kPcd, kPly, kE57, kUnknown };
+enum class Format { kPtx, kPcd, kPly, kE57, kPng, kUnknown };
 
 Format FormatOf(const std::string& path) {
   const size_t dot = path.find_last_of('.');
@@ -24,11 +25,12 @@ Format FormatOf(const std::string& path) {
   if (ext == "pcd") return Format::kPcd;
   if (ext == "ply") return Format::kPly;
   if (ext == "e57") return Format::kE57;
+  if (ext == "png") return Format::kPng;
   return Format::kUnknown;
 }
 
 Status Unknown(const std::string& path) {
-  return Status::Error(path + ": unknown scan format (expected a .ptx, .pcd, .ply or .e57 file)");
+  return Status::Error(path + ": unknown scan format (expected a .ptx, .pcd, .ply or .e57 file, or a 16-bit depth .png)");
 }
 
 }  // namespace
@@ -39,6 +41,7 @@ Status ReadScans(const std::string& path, const ReadOptions& options, ScanSet* s
     case Format::kPcd: return ReadPcd(path, options, scans);
     case Format::kPly: return ReadPly(path, options, scans);
     case Format::kE57: return ReadE57(path, options, scans);
+    case Format::kPng: return ReadDepthPng(path, options, scans);
     case Format::kUnknown: break;
   }
   return Unknown(path);
@@ -54,6 +57,8 @@ Status WriteScans(const std::string& path, const ScanSet& scans, const WriteOpti
       return WritePcd(path, scans.scans[0], options);
     case Format::kPly: return WritePly(path, scans, options);
     case Format::kE57: return WriteE57(path, scans);
+    case Format::kPng:
+      return Status::Error(path + ": depth PNGs are read, not written (write .pcd, .ptx or .e57)");
     case Format::kUnknown: break;
   }
   return Unknown(path);

@@ -46,13 +46,13 @@ Status MarkModelPoints(const ScanSet& scans, const KinematicModel& model,
     const OrganizedScan& scan = scans.scans[s];
     std::vector<uint8_t>& marks = (*on_model)[s];
     marks.assign(scan.size(), 0);
-    const AngularLattice& lattice = scan.lattice();
+    const ScanLattice& lattice = scan.lattice();
     if (!scan.organized() || !lattice.valid() || lattice.rows() != scan.rows() ||
         lattice.cols() != scan.cols()) {
       continue;
     }
     const Pose T_scanner_world = scan.T_world_scanner().inverse();
-    const double step = std::min(lattice.elevation_step(), lattice.azimuth_step());
+    const double step = std::min(std::abs(lattice.row_step()), std::abs(lattice.col_step()));
     const int rows = scan.rows(), cols = scan.cols();
     const int64_t n = static_cast<int64_t>(p_world.size());
     // Marking is idempotent (only ever 0 -> 1), so the result does not

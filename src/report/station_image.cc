@@ -45,9 +45,9 @@ RgbImage StationImage(const OrganizedScan& scan, const Pose& T_world_scanner,
   image.rgb.assign(3 * static_cast<size_t>(image.width) * static_cast<size_t>(image.height), 255);
   // Up is up: rows run up or down in elevation; left is left: azimuth
   // grows counter-clockwise seen from above, so to the scanner's left.
-  const AngularLattice& lattice = scan.lattice();
-  const bool rows_up = !lattice.valid() || lattice.elevation_step() > 0.0;
-  const bool cols_left = !lattice.valid() || lattice.azimuth_step() > 0.0;
+  const ScanLattice& lattice = scan.lattice();
+  const bool rows_up = !lattice.valid() || lattice.row_step() > 0.0;
+  const bool cols_left = !lattice.valid() || lattice.col_step() > 0.0;
   const Pose T = T_world_scanner;
 #pragma omp parallel for schedule(dynamic, 8)
   for (int y = 0; y < image.height; ++y) {

@@ -132,6 +132,9 @@ Status FillLine(const char* what, bool wrap, const std::vector<char>& known,
 
 bool LatticeOptions::IsValid(std::string* error) const {
   if (min_valid_points < 3) *error = "min_valid_points must be >= 3";
+  else if (!(min_in_front_share >= 0.0 && min_in_front_share <= 1.0))
+    *error = "min_in_front_share must be in [0, 1]";
+  else if (!(max_projective_rms_px > 0.0)) *error = "max_projective_rms_px must be > 0";
   else if (min_points_per_line < 1) *error = "min_points_per_line must be >= 1";
   else if (!(max_tilt_rad >= 0.0)) *error = "max_tilt_rad must be >= 0";
   else return true;
@@ -139,7 +142,7 @@ bool LatticeOptions::IsValid(std::string* error) const {
 }
 
 Status EstimateLattice(const OrganizedScan& scan, const LatticeOptions& options,
-                       AngularLattice* lattice) {
+                       ScanLattice* lattice) {
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("lattice options: " + error);
   if (!scan.organized()) return Status::Error("an unorganized cloud has no lattice");
@@ -148,6 +151,13 @@ Status EstimateLattice(const OrganizedScan& scan, const LatticeOptions& options,
     return Status::Error("too few valid points to estimate the lattice (" +
                          std::to_string(valid) + " < " +
                          std::to_string(options.min_valid_points) + ")");
+  }
+  using Model = LatticeOptions::Model;
+  if (options.model != Model::kAngular) {
+    double rms_px = 0.0;
+    const Status projective = EstimateProjectiveLattice(scan, options, lattice, &rms_px);
+    if (options.model == Model::kProjective) return projective;
+    if (projective.ok() && rms_px <= options.max_projective_rms_px) return Status::Ok();
   }
   Eigen::Matrix3d R_scanner_lattice = Eigen::Matrix3d::Identity();
   Eigen::Vector3d axis;
@@ -201,7 +211,7 @@ Status EstimateLattice(const OrganizedScan& scan, const LatticeOptions& options,
   }
   EDGEFIT_RETURN_IF_ERROR(FillLine("rows", false, row_known, &row_elevations));
   EDGEFIT_RETURN_IF_ERROR(FillLine("columns", true, col_known, &col_azimuths));
-  *lattice = AngularLattice(std::move(row_elevations), std::move(col_azimuths),
+  *lattice = ScanLattice(std::move(row_elevations), std::move(col_azimuths),
                             R_scanner_lattice);
   return Status::Ok();
 }

@@ -32,7 +32,7 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
   };
   // The cell's spacing is range * step (0 without a lattice).
   const double step =
-      std::max(std::abs(scan.lattice().elevation_step()), std::abs(scan.lattice().azimuth_step()));
+      std::max(std::abs(scan.lattice().row_step()), std::abs(scan.lattice().col_step()));
 
   // Row, column and the two diagonals.
   constexpr int kLines[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};

@@ -53,7 +53,7 @@ Eigen::AlignedBox3d DefaultAssetBox(const Scene& scene) {
 }
 
 Status MakeScanLattice(const Eigen::AlignedBox3d& asset_box_world, const Pose& T_world_scanner,
-                       const VirtualScanOptions& options, AngularLattice* lattice) {
+                       const VirtualScanOptions& options, ScanLattice* lattice) {
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("virtual scan: " + error);
   if (asset_box_world.isEmpty()) return Status::Error("virtual scan: empty asset box");
@@ -132,7 +132,7 @@ Status MakeScanLattice(const Eigen::AlignedBox3d& asset_box_world, const Pose& T
   std::vector<double> elevations(rows), azimuths(cols);
   for (int64_t r = 0; r < rows; ++r) elevations[r] = el_lo + static_cast<double>(r) * step;
   for (int64_t c = 0; c < cols; ++c) azimuths[c] = az_lo + static_cast<double>(c) * az_step;
-  *lattice = AngularLattice(std::move(elevations), std::move(azimuths));
+  *lattice = ScanLattice(std::move(elevations), std::move(azimuths));
   return Status::Ok();
 }
 

@@ -137,7 +137,7 @@ Status VirtualScanner::Scan(const std::vector<Pose>& T_world_scanner,
 
   for (size_t s = 0; s < T_world_scanner.size(); ++s) {
     const Pose& T = T_world_scanner[s];
-    AngularLattice lattice;
+    ScanLattice lattice;
     EDGEFIT_RETURN_IF_ERROR(
         MakeScanLattice(asset_box, T, options, &lattice).WithContext("scanner " + std::to_string(s)));
     const int rows = lattice.rows(), cols = lattice.cols();
@@ -145,7 +145,7 @@ Status VirtualScanner::Scan(const std::vector<Pose>& T_world_scanner,
     std::vector<uint16_t> labels(scan.size(), kLabelMissing);
 
     // Direction tables: d_scanner(row, col) = (ce ca, ce sa, se), exactly
-    // AngularLattice::Direction for a level lattice (R_scanner_lattice = I).
+    // ScanLattice::Direction for a level lattice (R_scanner_lattice = I).
     std::vector<double> cos_el(rows), sin_el(rows), cos_az(cols), sin_az(cols);
     for (int r = 0; r < rows; ++r) {
       cos_el[r] = std::cos(lattice.elevation(r));
@@ -162,7 +162,7 @@ Status VirtualScanner::Scan(const std::vector<Pose>& T_world_scanner,
     const Eigen::Vector3d o_world = T.translation();
     const double sigma = options.noise_sigma;
     const uint64_t seed = options.seed;
-    const double step = std::min(lattice.elevation_step(), lattice.azimuth_step());
+    const double step = std::min(lattice.row_step(), lattice.col_step());
 
     const auto start = std::chrono::steady_clock::now();
     // Pass 1: the central ray of every cell.

@@ -79,7 +79,7 @@ TEST(E57Test, RoundTripOrganizedScansKeepsPointsGridPoseAndColour) {
   EXPECT_EQ(read.sources[1], path);
   ScanSet expected = set;
   for (OrganizedScan& scan : expected.scans) {  // the reader estimates the lattice
-    AngularLattice lattice;
+    ScanLattice lattice;
     ASSERT_TRUE(EstimateLattice(scan, ReadOptions().lattice, &lattice).ok());
     scan.set_lattice(lattice);
   }

@@ -32,8 +32,8 @@ TEST(SampleScanTest, BundledSampleMatchesGenerator) {
     EXPECT_LT(worst, 1e-5);
     // Full 360 degree scans at 1.2 degrees per column, 0.75 per row.
     EXPECT_TRUE(a.lattice().full_circle());
-    EXPECT_NEAR(std::abs(a.lattice().azimuth_step()), 1.2 * M_PI / 180.0, 1e-4);
-    EXPECT_NEAR(std::abs(a.lattice().elevation_step()), 0.75 * M_PI / 180.0, 1e-4);
+    EXPECT_NEAR(std::abs(a.lattice().col_step()), 1.2 * M_PI / 180.0, 1e-4);
+    EXPECT_NEAR(std::abs(a.lattice().row_step()), 0.75 * M_PI / 180.0, 1e-4);
   }
 }
 

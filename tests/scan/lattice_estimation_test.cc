@@ -102,16 +102,16 @@ class LatticeEstimationTest : public ::testing::TestWithParam<LatticeCase> {};
 
 TEST_P(LatticeEstimationTest, RecoversKnownLattice) {
   const SyntheticScanOptions& options = GetParam().options;
-  AngularLattice truth;
+  ScanLattice truth;
   const OrganizedScan scan = MakeSyntheticScan(RoomScene(), options, &truth);
-  AngularLattice lattice;
+  ScanLattice lattice;
   const Status status = EstimateLattice(scan, LatticeOptions(), &lattice);
   ASSERT_TRUE(status.ok()) << status.message();
   ASSERT_EQ(lattice.rows(), options.rows);
   ASSERT_EQ(lattice.cols(), options.cols);
   const double de = std::abs(options.elevation_step), da = std::abs(options.azimuth_step);
-  EXPECT_NEAR(lattice.elevation_step(), options.elevation_step, 0.01 * de);
-  EXPECT_NEAR(lattice.azimuth_step(), options.azimuth_step, 0.01 * da);
+  EXPECT_NEAR(lattice.row_step(), options.elevation_step, 0.01 * de);
+  EXPECT_NEAR(lattice.col_step(), options.azimuth_step, 0.01 * da);
   // Every ray direction within 1% of a step (angles are frame-free this way:
   // the lattice frame may turn about the axis relative to the truth).
   double worst = 0.0;
@@ -154,7 +154,7 @@ TEST(LatticeEstimationErrorTest, TooSparseScanFails) {
   o.missing_fraction = 0.998;
   const OrganizedScan scan = MakeSyntheticScan(RoomScene(), o);
   ASSERT_LT(scan.CountValid(), 50u);
-  AngularLattice lattice;
+  ScanLattice lattice;
   const Status status = EstimateLattice(scan, LatticeOptions(), &lattice);
   ASSERT_FALSE(status.ok());
   EXPECT_NE(status.message().find("too few valid points"), std::string::npos) << status.message();
@@ -162,7 +162,7 @@ TEST(LatticeEstimationErrorTest, TooSparseScanFails) {
 
 TEST(LatticeEstimationErrorTest, EmptyScanFails) {
   const OrganizedScan scan(20, 30);
-  AngularLattice lattice;
+  ScanLattice lattice;
   EXPECT_FALSE(EstimateLattice(scan, LatticeOptions(), &lattice).ok());
 }
 
@@ -170,7 +170,7 @@ TEST(LatticeEstimationErrorTest, SingleColumnOfPointsFails) {
   SyntheticScanOptions o = Base();
   for (int c = 1; c < o.cols; ++c) o.missing_cols.push_back(c);
   const OrganizedScan scan = MakeSyntheticScan(RoomScene(), o);
-  AngularLattice lattice;
+  ScanLattice lattice;
   const Status status = EstimateLattice(scan, LatticeOptions(), &lattice);
   ASSERT_FALSE(status.ok());
   EXPECT_NE(status.message().find("columns"), std::string::npos) << status.message();
@@ -179,7 +179,7 @@ TEST(LatticeEstimationErrorTest, SingleColumnOfPointsFails) {
 TEST(LatticeEstimationErrorTest, UnorganizedCloudFails) {
   OrganizedScan scan(1, 100);
   scan.set_organized(false);
-  AngularLattice lattice;
+  ScanLattice lattice;
   EXPECT_FALSE(EstimateLattice(scan, LatticeOptions(), &lattice).ok());
 }
 

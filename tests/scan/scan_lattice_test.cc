@@ -1,4 +1,4 @@
-#include "edgefit/scan/angular_lattice.h"
+#include "edgefit/scan/scan_lattice.h"
 
 #include <gtest/gtest.h>
 
@@ -10,20 +10,20 @@
 namespace edgefit {
 namespace {
 
-AngularLattice MakeLattice(int rows, int cols, double e0, double de, double a0, double da,
+ScanLattice MakeLattice(int rows, int cols, double e0, double de, double a0, double da,
                            const Eigen::Matrix3d& R = Eigen::Matrix3d::Identity()) {
   std::vector<double> e(static_cast<size_t>(rows)), a(static_cast<size_t>(cols));
   for (int r = 0; r < rows; ++r) e[r] = e0 + r * de;
   for (int c = 0; c < cols; ++c) a[c] = a0 + c * da;
-  return AngularLattice(e, a, R);
+  return ScanLattice(e, a, R);
 }
 
-TEST(AngularLatticeTest, ProjectInvertsDirection) {
+TEST(ScanLatticeTest, ProjectInvertsDirection) {
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(0.03, Eigen::Vector3d(1, 2, 0).normalized()).toRotationMatrix();
-  const AngularLattice lattice = MakeLattice(40, 70, -0.6, 0.025, 2.5, 0.02, R);
-  EXPECT_NEAR(lattice.elevation_step(), 0.025, 1e-12);
-  EXPECT_NEAR(lattice.azimuth_step(), 0.02, 1e-12);
+  const ScanLattice lattice = MakeLattice(40, 70, -0.6, 0.025, 2.5, 0.02, R);
+  EXPECT_NEAR(lattice.row_step(), 0.025, 1e-12);
+  EXPECT_NEAR(lattice.col_step(), 0.02, 1e-12);
   EXPECT_FALSE(lattice.full_circle());
   for (int r = 0; r < lattice.rows(); r += 3) {
     for (int c = 0; c < lattice.cols(); c += 5) {
@@ -41,8 +41,8 @@ TEST(AngularLatticeTest, ProjectInvertsDirection) {
   }
 }
 
-TEST(AngularLatticeTest, FractionalPositionBetweenCells) {
-  const AngularLattice lattice = MakeLattice(10, 10, 0.0, 0.1, 0.0, 0.1);
+TEST(ScanLatticeTest, FractionalPositionBetweenCells) {
+  const ScanLattice lattice = MakeLattice(10, 10, 0.0, 0.1, 0.0, 0.1);
   const double e = 0.325, a = 0.41;
   const Eigen::Vector3d p(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
   double r, c;
@@ -51,8 +51,8 @@ TEST(AngularLatticeTest, FractionalPositionBetweenCells) {
   EXPECT_NEAR(c, 4.1, 1e-9);
 }
 
-TEST(AngularLatticeTest, RejectsOutsideAndOrigin) {
-  const AngularLattice lattice = MakeLattice(10, 10, 0.0, 0.1, 0.0, 0.1);
+TEST(ScanLatticeTest, RejectsOutsideAndOrigin) {
+  const ScanLattice lattice = MakeLattice(10, 10, 0.0, 0.1, 0.0, 0.1);
   double r, c;
   EXPECT_FALSE(lattice.Project(Eigen::Vector3d::Zero(), &r, &c));
   EXPECT_FALSE(lattice.Project(Eigen::Vector3d(-1, 0, 0.1), &r, &c));    // behind
@@ -61,9 +61,9 @@ TEST(AngularLatticeTest, RejectsOutsideAndOrigin) {
   EXPECT_NEAR(c, -0.4, 1e-2);
 }
 
-TEST(AngularLatticeTest, AnglesAgreeWithLibm) {
+TEST(ScanLatticeTest, AnglesAgreeWithLibm) {
   // Directions in every octant, on the octants' borders and on the axes.
-  const AngularLattice lattice = MakeLattice(3, 3, -0.1, 0.1, -0.1, 0.1);
+  const ScanLattice lattice = MakeLattice(3, 3, -0.1, 0.1, -0.1, 0.1);
   uint64_t state = 12345;
   auto uniform = [&state] {  // [-1, 1)
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -81,10 +81,10 @@ TEST(AngularLatticeTest, AnglesAgreeWithLibm) {
   }
 }
 
-TEST(AngularLatticeTest, FullCircleHasNoSeam) {
+TEST(ScanLatticeTest, FullCircleHasNoSeam) {
   // Decreasing azimuths that cross +-pi, as a scanner turning clockwise.
   const int cols = 360;
-  const AngularLattice lattice = MakeLattice(5, cols, -0.1, 0.05, 3.0, -2.0 * M_PI / cols);
+  const ScanLattice lattice = MakeLattice(5, cols, -0.1, 0.05, 3.0, -2.0 * M_PI / cols);
   EXPECT_TRUE(lattice.full_circle());
   for (int c = 0; c < cols; ++c) {
     int ir, ic;

@@ -86,12 +86,12 @@ SyntheticScene RoomScene() {
 }
 
 OrganizedScan MakeSyntheticScan(const SyntheticScene& scene, const SyntheticScanOptions& options,
-                                AngularLattice* truth) {
+                                ScanLattice* truth) {
   std::vector<double> elevations(static_cast<size_t>(options.rows));
   std::vector<double> azimuths(static_cast<size_t>(options.cols));
   for (int r = 0; r < options.rows; ++r) elevations[r] = options.elevation_first + r * options.elevation_step;
   for (int c = 0; c < options.cols; ++c) azimuths[c] = options.azimuth_first + c * options.azimuth_step;
-  const AngularLattice lattice(elevations, azimuths, options.R_scanner_lattice);
+  const ScanLattice lattice(elevations, azimuths, options.R_scanner_lattice);
   if (truth != nullptr) *truth = lattice;
 
   OrganizedScan scan(options.rows, options.cols);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "edgefit/core/pose.h"
-#include "edgefit/scan/angular_lattice.h"
+#include "edgefit/scan/scan_lattice.h"
 #include "edgefit/scan/organized_scan.h"
 
 namespace edgefit {
@@ -56,7 +56,7 @@ SyntheticScene RoomScene();
 // Ray-casts the scene; `truth` (optional) receives the exact lattice.
 OrganizedScan MakeSyntheticScan(const SyntheticScene& scene,
                                 const SyntheticScanOptions& options,
-                                AngularLattice* truth = nullptr);
+                                ScanLattice* truth = nullptr);
 
 // The bundled sample (assets/samples/two_scans.ptx): DefaultScene seen by two
 // scanners at known poses, full 360 degree scans, 1 mm noise, RGB off.

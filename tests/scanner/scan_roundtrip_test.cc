@@ -48,10 +48,10 @@ TEST(ScanRoundTripTest, PtxReadsBackWithTheGeneratorsLattice) {
     EXPECT_EQ(b.rows(), a.rows());
     EXPECT_EQ(b.cols(), a.cols());
     EXPECT_EQ(b.CountValid(), a.CountValid());
-    const double el = std::abs(a.lattice().elevation_step());
-    const double az = std::abs(a.lattice().azimuth_step());
-    EXPECT_NEAR(std::abs(b.lattice().elevation_step()), el, 0.01 * el);
-    EXPECT_NEAR(std::abs(b.lattice().azimuth_step()), az, 0.01 * az);
+    const double el = std::abs(a.lattice().row_step());
+    const double az = std::abs(a.lattice().col_step());
+    EXPECT_NEAR(std::abs(b.lattice().row_step()), el, 0.01 * el);
+    EXPECT_NEAR(std::abs(b.lattice().col_step()), az, 0.01 * az);
     EXPECT_TRUE(b.T_world_scanner().isApprox(a.T_world_scanner(), 1e-6));
   }
 }

@@ -94,7 +94,7 @@ TEST(VirtualScannerTest, LatticeReprojectsEveryPointToItsCell) {
     ASSERT_TRUE(s.lattice().valid());
     EXPECT_EQ(s.lattice().rows(), s.rows());
     EXPECT_EQ(s.lattice().cols(), s.cols());
-    EXPECT_NEAR(std::abs(s.lattice().azimuth_step()), std::abs(s.lattice().elevation_step()), 1e-12);
+    EXPECT_NEAR(std::abs(s.lattice().col_step()), std::abs(s.lattice().row_step()), 1e-12);
     size_t valid = 0, wrong = 0;
     for (size_t i = 0; i < s.size(); ++i) {
       if (!s.IsValid(i)) continue;

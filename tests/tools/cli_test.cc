@@ -123,6 +123,30 @@ TEST_F(CliTest, ScanInfoJson) {
   EXPECT_EQ(j["total_valid"].get<size_t>(), valid);
 }
 
+// A real depth camera's frame (../shared/data/real; skips without it): the
+// organized PCD's lattice is the camera's projective one, estimated from its
+// points as its camera_info gives it; the 16-bit depth PNG holds the same
+// frame with --camera_info, and without it is refused in one line.
+TEST_F(CliTest, ScanInfoOfARealDepthFrame) {
+  const std::string set = std::string(EDGEFIT_SHARED_DIR) + "/data/real/lbr_med7_zed2i";
+  if (!fs::exists(set + "/frames/000.pcd")) GTEST_SKIP() << "no " << set;
+  const RunResult pcd = Run("info --json --scan=" + set + "/frames/000.pcd");
+  ASSERT_EQ(pcd.exit_code, 0) << pcd.err;
+  const nlohmann::json l = nlohmann::json::parse(pcd.out)["scans"][0]["lattice"];
+  ASSERT_EQ(l["model"], "projective") << l.dump();
+  EXPECT_NEAR(l["fx"].get<double>(), 534.6265, 0.01);  // camera_info.yaml
+  EXPECT_NEAR(l["fy"].get<double>(), 534.6265, 0.01);
+  EXPECT_NEAR(l["cx"].get<double>(), 478.0846, 0.01);
+  EXPECT_NEAR(l["cy"].get<double>(), 260.9944, 0.01);
+  const RunResult png = Run("info --json --scan=" + set + "/frames/000_depth.png --camera_info=" +
+                            set + "/camera_info.yaml");
+  ASSERT_EQ(png.exit_code, 0) << png.err;
+  const nlohmann::json p = nlohmann::json::parse(png.out)["scans"][0];
+  EXPECT_EQ(p["valid"], nlohmann::json::parse(pcd.out)["scans"][0]["valid"]);
+  EXPECT_EQ(p["lattice"]["fx"].get<double>(), 534.6265258789062);
+  ExpectBadInput("info --scan=" + set + "/frames/000_depth.png", "000_depth.png");
+}
+
 TEST_F(CliTest, ModelInfoJson) {
   const std::string model = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
   const RunResult r = Run("info --json --urdf=" + model);

@@ -2,7 +2,7 @@
 //
 // Per query q_world and scan s:
 //   q_scanner = T_scanner_world(s) * q_world;
-//   (row, col) = ProjectToCell(q_scanner)         (O(1), angular_lattice.h);
+//   (row, col) = ProjectToCell(q_scanner)         (O(1), scan_lattice.h);
 //   nearest valid cell in rows [row - w, row + w] x cols [col - w, col + w]
 //   (columns wrap on a full-circle scan), by 3D distance in the scanner frame.
 // The best over all scans wins (ties: lower scan, then lower cell index), then

@@ -1,6 +1,13 @@
-// Estimation of a scan's AngularLattice from its points (DESIGN.md, Formats:
-// "the lattice of a real scan is not given").
+// Estimation of a scan's ScanLattice from its points (DESIGN.md, Formats:
+// "the lattice of a real scan is not given"). Which model: a depth camera's
+// frame (organized in its optical frame, every point in front of it: z > 0)
+// lies on a pinhole's grid, u = fx x/z + cx, v = fy y/z + cy; the model
+// whose fit leaves the smaller residual is taken (LatticeOptions::model).
 //
+// Projective: two robust straight-line fits, u on x/z and v on y/z, over
+// the valid points (outliers beyond 3 median residuals dropped).
+//
+// Angular:
 // 1. Tilt: every column of a TLS scan is one position of the scanner head, so
 //    its rays span a plane through the origin that contains the rotation axis
 //    a. The plane normal n_c (smallest eigenvector of sum d d^T over the
@@ -20,12 +27,20 @@
 #include <string>
 
 #include "edgefit/core/status.h"
-#include "edgefit/scan/angular_lattice.h"
+#include "edgefit/scan/scan_lattice.h"
 #include "edgefit/scan/organized_scan.h"
 
 namespace edgefit {
 
 struct LatticeOptions {
+  // The lattice's model; kAuto: projective when at least
+  // min_in_front_share of the valid points lie in front of the frame's xy
+  // plane and the projective fit's RMS residual is within
+  // max_projective_rms_px, angular otherwise.
+  enum class Model { kAuto, kAngular, kProjective };
+  Model model = Model::kAuto;
+  double min_in_front_share = 0.99;
+  double max_projective_rms_px = 0.25;  // [px]
   // Fewer valid points than this in the scan: fail (too sparse to trust).
   int min_valid_points = 50;
   // A row or column with fewer valid points is treated as missing and
@@ -46,11 +61,18 @@ struct LatticeOptions {
   bool IsValid(std::string* error) const;
 };
 
-// Estimates `lattice` of an organized scan (rows = elevation, cols = azimuth).
-// Fails for an unorganized scan, or one with fewer than 2 rows / columns that
-// hold points or fewer than min_valid_points valid points.
+// Estimates `lattice` of an organized scan (angular: rows = elevation, cols
+// = azimuth; projective: rows = v, cols = u). Fails for an unorganized scan,
+// or one with fewer than 2 rows / columns that hold points or fewer than
+// min_valid_points valid points.
 Status EstimateLattice(const OrganizedScan& scan, const LatticeOptions& options,
-                       AngularLattice* lattice);
+                       ScanLattice* lattice);
+
+// The projective lattice alone (fx, fy, cx, cy); *rms_px: the fits' larger
+// RMS residual [px]. Fails when fewer than min_in_front_share of the points
+// lie in front of the frame or the fits find no positive focal lengths.
+Status EstimateProjectiveLattice(const OrganizedScan& scan, const LatticeOptions& options,
+                                 ScanLattice* lattice, double* rms_px);
 
 }  // namespace edgefit
 

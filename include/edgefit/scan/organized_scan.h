@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "edgefit/core/pose.h"
-#include "edgefit/scan/angular_lattice.h"
+#include "edgefit/scan/scan_lattice.h"
 
 namespace edgefit {
 
@@ -80,8 +80,8 @@ class OrganizedScan {
   size_t FileIndex(size_t i) const;
 
   // The angular lattice; valid only after EstimateLattice (lattice_estimation.h; the readers call it) or set_lattice.
-  const AngularLattice& lattice() const { return lattice_; }
-  void set_lattice(AngularLattice lattice) { lattice_ = std::move(lattice); }
+  const ScanLattice& lattice() const { return lattice_; }
+  void set_lattice(ScanLattice lattice) { lattice_ = std::move(lattice); }
 
   size_t CountValid() const;
   // Bytes held per grid cell (memory budget check).
@@ -96,7 +96,7 @@ class OrganizedScan {
   std::vector<std::array<uint8_t, 3>> colors_;
   Pose T_world_scanner_ = Pose::Identity();
   FileOrder file_order_ = FileOrder::kColumnMajor;
-  AngularLattice lattice_;
+  ScanLattice lattice_;
 };
 
 // A set of scans of one scene, in file order (DESIGN.md: ScanSet).

@@ -3,7 +3,7 @@
 // grid cell with the first hit kept, so occlusion is real.
 //
 // Per cell (row, col) with unit direction d_scanner from the scan's exact
-// AngularLattice (scanner frame, level: lattice frame = scanner frame):
+// ScanLattice (scanner frame, level: lattice frame = scanner frame):
 //   first hit at distance t (t <= max_range, else the cell is missing);
 //   range  = t + n,  n ~ N(0, noise_sigma^2), "along the laser direction"
 //            (a realistic sensor: t is the footprint's mixed range and the
@@ -93,7 +93,7 @@ struct VirtualScan {
 // The angular window of one scan (exposed for tests and the command line):
 // the exact lattice ScanScene uses for a scanner at T_world_scanner.
 Status MakeScanLattice(const Eigen::AlignedBox3d& asset_box_world, const Pose& T_world_scanner,
-                       const VirtualScanOptions& options, AngularLattice* lattice);
+                       const VirtualScanOptions& options, ScanLattice* lattice);
 
 // The asset box ScanScene uses when options.asset_box_world is unset.
 Eigen::AlignedBox3d DefaultAssetBox(const Scene& scene);
