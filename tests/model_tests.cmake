@@ -11,6 +11,7 @@ edgefit_add_test(model_test
     model/surface_sampler_test.cc
     model/sharp_edges_test.cc
     model/joint_values_test.cc
+    model/frozen_joints_test.cc
   LIBS edgefit::model)
 # The real models in ${EDGEFIT_SHARED_DIR}/robots (skipped when absent).
 edgefit_add_test(model_robots_test SOURCES model/robots_test.cc LIBS edgefit::model)

@@ -41,4 +41,11 @@ edgefit_add_test(small_scene_fit_test
 # the survey's frame and the stations' corrections.
 edgefit_add_test(pipeline_unit_test
   SOURCES pipeline/instance_crop_test.cc pipeline/result_json_test.cc pipeline/stations_test.cc
+          pipeline/noise_scale_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::model edgefit_test_synthetic)
+# e2e: a real depth frame of a real robot (../shared/data/real; skips
+# without it): the calibration with its recorded joints, and every joint
+# fitted, against the robot's readings.
+edgefit_add_test(real_frame_fit_test SINGLE_PROCESS E2E
+  SOURCES pipeline/real_frame_fit_test.cc
+  LIBS edgefit::pipeline edgefit::io edgefit::model nlohmann_json::nlohmann_json)

@@ -61,6 +61,12 @@ DEFINE_string(beam, "faro_focus",
 DEFINE_bool(jackets, false,
             "Protective jackets 3-8 mm over 40-80 % of the upper arm and the forearm.");
 
+DEFINE_string(joints, "",
+              "Joint values: name=value,... in rad / m, or with a unit: joint_2=-30deg, "
+              "slide=250mm. scan: the posture (joints not named stay at 0 or their nearest "
+              "limit); fit: the known joints, held at these values while the others are "
+              "fitted (all of them: the base alone, camera-to-robot calibration).");
+
 namespace edgefit::tools {
 
 Status ReadOptionsFromFlags(ReadOptions* options) {

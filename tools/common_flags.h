@@ -29,6 +29,7 @@ DECLARE_double(spacing_mm);
 DECLARE_double(noise_mm);
 DECLARE_string(beam);
 DECLARE_bool(jackets);
+DECLARE_string(joints);
 
 namespace edgefit {
 struct AssetScanOptions;

@@ -10,6 +10,7 @@
 //               [--threads=N] [--seed=N]
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,9 +23,11 @@
 #include "common_flags.h"
 #include "edgefit/bench/fit_errors.h"
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/io/joint_states.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/calibrated_urdf.h"
 #include "edgefit/model/composition.h"
+#include "edgefit/model/joint_values.h"
 #include "edgefit/model/mesh_ply.h"
 #include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/pipeline/fit.h"
@@ -35,6 +38,11 @@
 #include "edgefit/scanner/truth.h"
 #include "fit_flags.h"
 
+DEFINE_string(joint_states, "",
+              "Known joints from a ROS joint_states YAML file (name and position lists, as "
+              "--out_joint_states writes them): the model's independent joints named there are "
+              "held at those values while the others are fitted; other names are ignored. With "
+              "--joints, --joints wins for the joints it names.");
 DEFINE_string(out_joint_states, "",
               "Optional output: joint values as YAML, ROS joint_states "
               "layout (name, position).");
@@ -110,6 +118,32 @@ json FitInputsJson(const std::vector<AttachSpec>& specs, const Eigen::AlignedBox
   return inputs;
 }
 
+// --joint_states and --joints: the joints held at given values.
+Status KnownJointsFromFlags(const KinematicModel& model, KnownJoints* known) {
+  known->clear();
+  KnownJoints from_file, from_flag;
+  if (!FLAGS_joint_states.empty()) {
+    EDGEFIT_RETURN_IF_ERROR(ReadJointStates(FLAGS_joint_states, &from_file));
+  }
+  EDGEFIT_RETURN_IF_ERROR(ParseNamedValues(FLAGS_joints, &from_flag));
+  std::string ignored;
+  for (const auto& [name, value] : from_file) {
+    const int j = model.JointIndex(name);
+    const bool named = std::any_of(from_flag.begin(), from_flag.end(),
+                                   [&name](const auto& v) { return v.first == name; });
+    if (j < 0 || !model.joints()[static_cast<size_t>(j)].IsIndependent()) {
+      ignored += " " + name;
+    } else if (!named) {
+      known->emplace_back(name, value);
+    }
+  }
+  if (!ignored.empty()) {
+    Progress("--joint_states: not independent joints of the model, ignored:" + ignored);
+  }
+  known->insert(known->end(), from_flag.begin(), from_flag.end());
+  return Status::Ok();
+}
+
 int RunFit(const Command& command) {
   if (FLAGS_urdf.empty()) return BadInput(command, "--urdf is required");
   if (FLAGS_scan.empty()) return BadInput(command, "--scan is required");
@@ -139,6 +173,7 @@ int RunFit(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ChooseAssetKind(FLAGS_kind, model, &kind));
   FitOptions options;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitOptionsFromFlags(kind, &options));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, KnownJointsFromFlags(model, &options.known_joints));
   ScanSet scans;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, &scans));
   std::vector<CellTruthAsset> truth;  // one asset, or a cell's (edgefit scan --scene)
@@ -330,7 +365,8 @@ Command FitCommand() {
       "  edgefit fit --urdf=assets/robot/robot.urdf --attach=assets/robot/weld_gun.urdf@tool0 \\\n"
       "    --scan=robot.ptx --truth=robot_truth.json --out=result.json\n"
       "  edgefit fit --urdf=assets/conveyor/conveyor.urdf --scan=conveyor.ptx --out=result.json",
-      WithFitOptionFlags({"urdf", "attach", "scan", "camera_info", "depth_scale", "out", "kind", "init", "roi", "truth",
+      WithFitOptionFlags({"urdf", "attach", "scan", "camera_info", "depth_scale", "joints",
+                          "joint_states", "out", "kind", "init", "roi", "truth",
                           "out_joint_states", "out_urdf", "out_ply", "out_report", "out_background",
                           "background_distance_mm", "threads", "seed"}),
       &RunFit};

@@ -74,6 +74,16 @@ DEFINE_string(init, "",
               "Optional base hint x,y,yaw_deg (metres, degrees; the height comes from the "
               "scan's floor): skips the rough base stage. Never required.");
 
+DEFINE_string(mounting, "auto",
+              "How the base may be mounted: upright (standing on the floor: the cross sections "
+              "of Sec. 5.1.1), any (hanging, on a wall, on a wedge: pose voting of the base and "
+              "its first links), auto (upright on laser scans, both on a depth camera's "
+              "frames).");
+DEFINE_bool(noise_scale, true,
+            "Scale every distance threshold (gates, tolerances, the verdict's RMS) to the "
+            "noise measured where the base meets the scan (no change at 3 mm or less, as on laser "
+            "scans).");
+
 namespace edgefit::tools {
 
 Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
@@ -103,6 +113,12 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->mixed_pixels.tolerance = FLAGS_mixed_pixel_tolerance_mm * 1e-3;
   options->mixed_pixels.min_lines = FLAGS_mixed_pixel_lines;
   options->mixed_pixels.neighbour_lines = FLAGS_mixed_pixel_neighbour_lines;
+  using Mounting = BaseOptions::Mounting;
+  if (FLAGS_mounting == "auto") options->base.mounting = Mounting::kAuto;
+  else if (FLAGS_mounting == "upright") options->base.mounting = Mounting::kUpright;
+  else if (FLAGS_mounting == "any") options->base.mounting = Mounting::kAny;
+  else return Status::Error("--mounting must be auto, upright or any, not '" + FLAGS_mounting + "'");
+  options->noise.scale = FLAGS_noise_scale;
   if (!FLAGS_init.empty()) {
     double x = 0.0, y = 0.0, yaw = 0.0;
     EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));
@@ -130,7 +146,8 @@ std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own, bool w
                            "visibility_tolerance_mm", "cad_deviation_mm",
                            "cad_deviation_patch_mm", "incidence_cosine", "remove_mixed_pixels",
                            "refine_without_mixed_pixels", "mixed_pixel_tolerance_mm",
-                           "mixed_pixel_lines", "mixed_pixel_neighbour_lines"}) {
+                           "mixed_pixel_lines", "mixed_pixel_neighbour_lines", "mounting",
+                           "noise_scale"}) {
     own.emplace_back(flag);
   }
   return own;

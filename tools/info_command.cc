@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "common_flags.h"
 #include "edgefit/io/scan_io.h"
+#include "edgefit/scan/scan_noise.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/urdf_loader.h"
 
@@ -84,13 +85,23 @@ json ScanJson(const OrganizedScan& scan, const std::string& source, int index) {
 int RunScanInfo(const Command& command) {
   ReadOptions read_options;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadOptionsFromFlags(&read_options));
-  json out = {{"files", json::array()}, {"scans", json::array()}};
+  json out = {{"files", json::array()}, {"scans", json::array()}, {"range_noise", json::array()}};
   size_t total = 0, total_valid = 0;
   for (const std::string& path : SplitList(FLAGS_scan)) {
     ScanSet set;
     const Status status = ReadScans(path, read_options, &set);
     if (!status.ok()) return BadInput(command, status);
     out["files"].push_back(path);
+    const ScanNoise noise = EstimateScanNoise(set, ScanNoiseOptions());
+    json by_range = json::array();
+    for (size_t b = 0; b < noise.sigma.size(); ++b) {
+      if (std::isfinite(noise.sigma[b])) {
+        by_range.push_back({{"range_m", (b + 0.5) * noise.bin}, {"sigma_m", noise.sigma[b]}});
+      }
+    }
+    out["range_noise"].push_back({{"sigma_m", noise.median_sigma},
+                                  {"measured", noise.measured},
+                                  {"by_range", by_range}});
     for (size_t i = 0; i < set.scans.size(); ++i) {
       out["scans"].push_back(ScanJson(set.scans[i], path, static_cast<int>(i)));
       total += set.scans[i].size();
@@ -127,6 +138,16 @@ int RunScanInfo(const Command& command) {
     const json& T = s["T_world_scanner"];
     std::printf("  scanner at (%.4f, %.4f, %.4f) m\n", T[0][3].get<double>(),
                 T[1][3].get<double>(), T[2][3].get<double>());
+  }
+  for (size_t f = 0; f < out["range_noise"].size(); ++f) {
+    const json& n = out["range_noise"][f];
+    std::printf("%s: range noise %.2f mm (1.4826 x median distance to the local plane)",
+                out["files"][f].get<std::string>().c_str(), 1e3 * n["sigma_m"].get<double>());
+    for (const json& b : n["by_range"]) {
+      std::printf("%s %.2f m: %.2f mm", &b == &n["by_range"][0] ? "; by range" : ",",
+                  b["range_m"].get<double>(), 1e3 * b["sigma_m"].get<double>());
+    }
+    std::printf("\n");
   }
   std::printf("total: %zu cells, %zu valid points\n", total, total_valid);
   return kExitOk;

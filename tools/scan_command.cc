@@ -28,9 +28,6 @@
 #include "edgefit/scanner/truth.h"
 #include "edgefit/scanner/virtual_scanner.h"
 
-DEFINE_string(joints, "",
-              "Joint values: name=value,... in rad / m, or with a unit: joint_2=-30deg, "
-              "slide=250mm. Joints not named stay at 0 (or their nearest limit).");
 DEFINE_string(posture, "", "A named posture: POSTURES.json:NAME (e.g. assets/robot/postures.json:home).");
 DEFINE_bool(random_pose, false, "Draw the independent joints uniformly inside their limits (--seed).");
 DEFINE_string(base, "0,0,0", "Base pose on the floor: x,y in m, yaw in degrees.");

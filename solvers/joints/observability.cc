@@ -116,14 +116,24 @@ BaseSymmetry FindBaseSymmetry(const KinematicModel& model,
   const Eigen::Vector3f origin = joint.T_parent_joint.translation().cast<float>();
   for (Eigen::Vector3f& p : centred.points) p -= origin;
   const Eigen::Vector3d axis = joint.T_parent_joint.linear() * joint.axis;
+  size_t tested = 0;
   for (int degrees = 30; degrees < 360; degrees += 15) {
     if (degrees % 30 != 0 && degrees % 45 != 0) continue;
+    ++tested;
     const double turn = degrees * M_PI / 180.0;
     if (TurnedOffShare(centred, axis, turn, spacing, options) <= options.max_off_share) {
       symmetry.turns.push_back(turn);
     }
   }
-  if (symmetry.turns.empty()) symmetry.joint = -1;
+  if (symmetry.turns.empty()) {
+    symmetry.joint = -1;
+    return symmetry;
+  }
+  symmetry.round = symmetry.turns.size() == tested;  // every multiple of 30 and 45 degrees
+  for (const int degrees : {10, 20}) {
+    symmetry.round = symmetry.round && TurnedOffShare(centred, axis, degrees * M_PI / 180.0,
+                                                      spacing, options) <= options.max_off_share;
+  }
   return symmetry;
 }
 

@@ -70,11 +70,15 @@ bool TurnIsUnobservable(const KinematicModel& model, int joint, const std::vecto
 struct BaseSymmetry {
   int joint = -1;             // the root's first revolute joint; -1: none
   std::vector<double> turns;  // turns in (0, 2 pi) the base looks the same at [rad]
+  // Round: the base looks the same at every turn tested, 10 and 20 degrees
+  // too (a cobot's round base): no scan tells its yaw from the joint's
+  // value at all, and the joint is reported at zero (unobservable).
+  bool round = false;
 };
 
 // The symmetry of the base body (the root link and the links fixed to it;
 // link_samples: every link's, link frame, at `spacing`), tested at every
-// multiple of 30 and 45 degrees.
+// multiple of 30 and 45 degrees, and at 10 and 20 degrees for `round`.
 BaseSymmetry FindBaseSymmetry(const KinematicModel& model,
                               const std::vector<SurfaceSamples>& link_samples, double spacing,
                               const ObservabilityOptions& options);

@@ -248,6 +248,8 @@ void WeightedIcp::Measure(const SurfaceSamples& samples, const Pose& T_world_lin
   const Eigen::Matrix3d R = T_world_link.linear();
   double sum_squared = 0.0;
   size_t inliers = 0;
+  std::vector<double> distances;
+  distances.reserve(correspondences_.size());
   for (const Correspondence& m : correspondences_) {
     double d = m.distance;
     if (plane) {
@@ -259,9 +261,16 @@ void WeightedIcp::Measure(const SurfaceSamples& samples, const Pose& T_world_lin
       if (d > gate) continue;
     }
     sum_squared += d * d;
+    distances.push_back(d);
     ++inliers;
   }
   summary->inliers = inliers;
+  if (!distances.empty()) {
+    const size_t mid = distances.size() / 2;
+    std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(mid),
+                     distances.end());
+    summary->median_distance = distances[mid];
+  }
   summary->inlier_share =
       summary->visible_points > 0
           ? static_cast<double>(summary->inliers) / static_cast<double>(summary->visible_points)

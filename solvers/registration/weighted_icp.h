@@ -137,6 +137,7 @@ struct WeightedIcpSummary {
   size_t inliers = 0;         // of the visible samples
   double inlier_share = 0.0;
   double rms = 0.0;
+  double median_distance = 0.0;  // of the inliers [m]: robust where rms is not
   // kPoseWithPenalties on a joint: largest distance a sample moved when the
   // 6-DoF result was projected onto the joint [m] (0 otherwise), a measure
   // of how far the penalties let the link leave its joint.

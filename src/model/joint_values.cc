@@ -71,8 +71,9 @@ Status ReadPostures(const std::string& path, nlohmann::ordered_json* postures) {
 
 }  // namespace
 
-Status ParseJointAssignments(const std::string& text, const KinematicModel& model,
-                             std::vector<double>* q) {
+Status ParseNamedValues(const std::string& text,
+                        std::vector<std::pair<std::string, double>>* values) {
+  values->clear();
   size_t start = 0;
   while (start < text.size()) {
     size_t end = text.find(',', start);
@@ -82,12 +83,22 @@ Status ParseJointAssignments(const std::string& text, const KinematicModel& mode
     if (item.empty()) continue;
     const size_t eq = item.find('=');
     double value = 0.0;
-    if (eq == std::string::npos || !ParseValueWithUnit(item.substr(eq + 1), &value)) {
+    if (eq == std::string::npos || eq == 0 || !ParseValueWithUnit(item.substr(eq + 1), &value)) {
+      values->clear();
       return Status::Error("--joints: '" + item +
                            "' is not name=value (value in rad or m, or with deg / mm)");
     }
-    EDGEFIT_RETURN_IF_ERROR(
-        SetJoint(model, item.substr(0, eq), value, q).WithContext("--joints"));
+    values->emplace_back(item.substr(0, eq), value);
+  }
+  return Status::Ok();
+}
+
+Status ParseJointAssignments(const std::string& text, const KinematicModel& model,
+                             std::vector<double>* q) {
+  std::vector<std::pair<std::string, double>> values;
+  EDGEFIT_RETURN_IF_ERROR(ParseNamedValues(text, &values));
+  for (const auto& [name, value] : values) {
+    EDGEFIT_RETURN_IF_ERROR(SetJoint(model, name, value, q).WithContext("--joints"));
   }
   return Status::Ok();
 }

@@ -1,4 +1,5 @@
 // Sec. 5.1.1 / 6.1: the rough base poses (stages.h).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -52,8 +53,9 @@ Status RoughBase(const ScanSet& scans, double floor_z, const KinematicModel& mod
 }  // namespace
 
 Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const Body& base,
-                      const CadSamples& cad, const JointSweep& sweep, const FitOptions& options,
-                      const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs) {
+                      const CadSamples& cad, ScanTools* tools, const FitOptions& options,
+                      const ProgressFn& say, FitResult* result, std::vector<RoughPose>* roughs) {
+  const JointSweep& sweep = tools->sweep;
   roughs->clear();
   const auto start = std::chrono::steady_clock::now();
   // The base stands level on the floor (Sec. 5.1.1, 6.1).
@@ -67,22 +69,54 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const B
     if (!floor.ok()) return Status::Error("base hint: " + floor.message());
     Pose T_world_base = options.base.T_world_base_initial;
     T_world_base.translation().z() += floor_z;
-    roughs->push_back(T_world_base);
+    roughs->push_back({T_world_base});
     return Status::Ok();
   }
-  if (!floor.ok()) return Status::Error("base rough registration: " + floor.message());
+  using Mounting = BaseOptions::Mounting;
+  const Mounting mounting = options.base.mounting;
   TriangleMesh base_mesh;
   for (size_t k = 0; k < base.links.size(); ++k) {
     base_mesh.Append(model.links()[static_cast<size_t>(base.links[k])].mesh, base.T_body_link[k]);
   }
   const SurfaceSamples base_sweep = BodySamples(base, cad.sweep, options.samples.max_sweep_samples);
   auto base_loss = [&](const Pose& T) { return sweep.LossAt(base_sweep, T, options.chain.sweep); };
-  EDGEFIT_RETURN_IF_ERROR(
-      RoughBase(scans, floor_z, model, base_mesh, options, base_loss, say, result));
-  *roughs = RankBaseHypotheses(&result->base_rough.candidates, base_mesh.BoundingBox().sizes(),
-                               result->base_rough_method == BaseOptions::Method::kCrossSections,
-                               base_loss, base_sweep.size(), options.base.hypotheses, say);
-  result->base_rough.T_world_base = roughs->front();
+  Status upright = Status::Error("not tried (any mounting)");
+  if (mounting != Mounting::kAny) {
+    upright = floor.ok() ? RoughBase(scans, floor_z, model, base_mesh, options, base_loss, say, result)
+                         : Status::Error(floor.message());
+    if (!upright.ok()) result->base_rough.candidates.clear();
+  }
+  std::vector<RoughPose> voted;
+  if (mounting == Mounting::kAny || (mounting == Mounting::kAuto && AnyCameraFrame(scans))) {
+    if (!upright.ok() && mounting == Mounting::kAuto) say("base: upright: " + upright.message());
+    const Status status = VoteBasePoses(model, scans, base, cad, options, tools, say, &voted);
+    if (!status.ok() && !upright.ok()) {
+      return Status::Error("base rough registration: " + upright.message() +
+                           "; any mounting: " + status.message());
+    }
+  } else if (!upright.ok()) {
+    return Status::Error("base rough registration: " + upright.message());
+  }
+  if (!upright.ok()) {  // voted poses only, ranked by their bodies' loss
+    *roughs = std::move(voted);
+    result->base_rough.T_world_base = roughs->front().T_world_base;
+    result->timings.base_rough = Since(start);
+    return Status::Ok();
+  }
+  for (const Pose& T :
+       RankBaseHypotheses(&result->base_rough.candidates, base_mesh.BoundingBox().sizes(),
+                          result->base_rough_method == BaseOptions::Method::kCrossSections,
+                          base_loss, base_sweep.size(), options.base.hypotheses, say)) {
+    roughs->push_back({T});
+  }
+  for (const RoughPose& v : voted) {  // the chain tells the readings apart
+    if (std::all_of(roughs->begin(), roughs->end(), [&v](const RoughPose& r) {
+          return IsDistinctPose(r.T_world_base, v.T_world_base);
+        })) {
+      roughs->push_back(v);
+    }
+  }
+  result->base_rough.T_world_base = roughs->front().T_world_base;
   result->timings.base_rough = Since(start);
   return Status::Ok();
 }

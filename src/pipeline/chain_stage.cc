@@ -10,15 +10,20 @@
 namespace edgefit {
 
 Status FitChainFrom(const KinematicModel& model, const Body& base,
-                    const SurfaceSamples& base_samples, const Pose& T_rough,
+                    const SurfaceSamples& base_samples, const RoughPose& rough,
                     const FitOptions& options, WeightedIcp* icp, ChainFitter* chain,
                     const ProgressFn& say, FitResult* result, ChainAttempt* attempt) {
   auto stage = std::chrono::steady_clock::now();
-  say("base: precise weighted ICP");
   LinkState base_state;
-  base_state.T_world_link = T_rough;
-  EDGEFIT_RETURN_IF_ERROR(
-      icp->Fit(base_samples, LinkMotion::Free(), options.base.icp, &base_state, &attempt->base));
+  base_state.T_world_link = rough.T_world_base;
+  if (rough.registered) {
+    EDGEFIT_RETURN_IF_ERROR(
+        icp->Evaluate(base_samples, rough.T_world_base, options.base.icp, &attempt->base));
+  } else {
+    say("base: precise weighted ICP");
+    EDGEFIT_RETURN_IF_ERROR(
+        icp->Fit(base_samples, LinkMotion::Free(), options.base.icp, &base_state, &attempt->base));
+  }
   attempt->T_world_base = base_state.T_world_link;
   result->timings.base_precise += Since(stage);
   if (options.min_base_inlier_share > 0.0 &&
@@ -36,14 +41,16 @@ Status FitChainFrom(const KinematicModel& model, const Body& base,
 }
 
 Status FitChainFromRoughPoses(const KinematicModel& model, const Body& base,
-                              const SurfaceSamples& base_samples, const std::vector<Pose>& roughs,
+                              const SurfaceSamples& base_samples,
+                              const std::vector<RoughPose>& roughs,
                               const FitOptions& options, WeightedIcp* icp, ChainFitter* chain,
                               const ProgressFn& say, FitResult* result, ChainAttempt* best) {
   EDGEFIT_RETURN_IF_ERROR(FitChainFrom(model, base, base_samples, roughs.front(), options, icp,
                                        chain, say, result, best));
   const auto start = std::chrono::steady_clock::now();
   for (size_t k = 1; k < roughs.size(); ++k) {
-    const double apart = (roughs[k].translation() - roughs.front().translation()).norm();
+    const double apart =
+        (roughs[k].T_world_base.translation() - roughs.front().T_world_base.translation()).norm();
     char line[240];
     if (apart > options.base.hypotheses.instance_separation && !best->base_mismatch) {
       std::snprintf(line, sizeof(line),
@@ -63,7 +70,7 @@ Status FitChainFromRoughPoses(const KinematicModel& model, const Body& base,
     say(line);
     if (other.loss < best->loss) {
       *best = std::move(other);
-      result->base_rough.T_world_base = roughs[k];
+      result->base_rough.T_world_base = roughs[k].T_world_base;
     }
   }
   result->timings.alternatives = Since(start);

@@ -69,11 +69,40 @@ std::string BaseMismatchMessage(const BodyQuality& b, const FitOptions& options)
   return line;
 }
 
+// FitOptions::known_joints: the model with those joints held (frozen), the
+// fit of the others, then the result read against the original model: the
+// held joints at their values, each with the verdict "given".
+Status FitWithKnownJoints(const KinematicModel& model, const ScanSet& scans,
+                          const FitOptions& options, const ProgressFn& progress,
+                          FitResult* result) {
+  KinematicModel frozen;
+  EDGEFIT_RETURN_IF_ERROR(FreezeJoints(model, options.known_joints, &frozen));
+  FitOptions rest = options;
+  rest.known_joints.clear();
+  EDGEFIT_RETURN_IF_ERROR(Fit(frozen, scans, rest, progress, result));
+  SetKnownJoints(model, options.known_joints, &result->q);
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    const Joint& joint = model.joints()[j];
+    if (!joint.IsIndependent() || frozen.joints()[j].IsMoving()) continue;
+    BodyQuality given;
+    given.joint = joint.name;
+    given.link = model.links()[static_cast<size_t>(joint.child_link)].name;
+    given.verdict = JointVerdict::kGiven;
+    given.ok = true;
+    given.sweep_value = result->q[j];
+    result->bodies.push_back(given);
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitOptions& options,
            const ProgressFn& progress, FitResult* result) {
   CHECK(result != nullptr);
+  if (!options.known_joints.empty()) {
+    return FitWithKnownJoints(model, written_scans, options, progress, result);
+  }
   EDGEFIT_RETURN_IF_ERROR(CheckFitInputs(model, written_scans, options));  // before any work
   const auto start = std::chrono::steady_clock::now();
   // Extension: mixed pixels off the scans.
@@ -103,8 +132,9 @@ Status Fit(const KinematicModel& model, const ScanSet& written_scans, const FitO
 }
 
 Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
-                    const EdgeDetectionResult& edges, const FitOptions& options,
+                    const EdgeDetectionResult& edges, const FitOptions& given_options,
                     const ProgressFn& progress, FitResult* result) {
+  FitOptions options = given_options;  // scaled to the noise below
   CHECK(result != nullptr);
   const auto start = std::chrono::steady_clock::now();
   auto say = [&progress](const std::string& line) {
@@ -134,11 +164,11 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   }
 
   // Sec. 5.1.1 / 6.1: the base body's rough poses, best first.
-  std::vector<Pose> roughs;
+  std::vector<RoughPose> roughs;
   {
-    const ScanTools tools(&scans, weights, normals, options.residuals);
+    ScanTools tools(&scans, weights, normals, options.residuals);
     const Status rough =
-        RoughBasePoses(model, scans, base, cad, tools.sweep, options, say, result, &roughs);
+        RoughBasePoses(model, scans, base, cad, &tools, options, say, result, &roughs);
     if (!rough.ok()) return not_ok(rough.message());
   }
 
@@ -149,7 +179,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   ScanSet own;
   if (options.crop.enabled) {
     std::vector<Eigen::Vector3d> centers;
-    for (const Pose& T : roughs) centers.push_back(T.translation());
+    for (const RoughPose& r : roughs) centers.push_back(r.T_world_base.translation());
     own = CropToRays(scans, centers, ModelReach(model) + options.crop.margin);
     say("crop: " + std::to_string(own.TotalValid()) + " of " + std::to_string(scans.TotalValid()) +
         " points on rays near the rough base poses");
@@ -164,6 +194,12 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   ChainAttempt best;
   {
     ScanTools tools(&work, weights, normals, options.residuals);
+    // Extension for noisy sensors: every distance threshold scaled to the
+    // noise where the base meets the scan (noise_scale.h).
+    FitOptions scaled;
+    EDGEFIT_RETURN_IF_ERROR(MeasureNoise(base_samples, roughs.front().T_world_base, options,
+                                         &tools.icp, say, result, &scaled));
+    options = scaled;
     ChainFitter chain(model, options.chain, options.samples, cad.icp, cad.sweep, &tools.icp,
                       &tools.sweep, say);
     EDGEFIT_RETURN_IF_ERROR(FitChainFromRoughPoses(model, base, base_samples, roughs, options,

@@ -27,6 +27,14 @@ bool QualityOptions::IsValid(std::string* error) const {
   return observability.IsValid(error);
 }
 
+bool NoiseOptions::IsValid(std::string* error) const {
+  if (!(reference_sigma > 0.0)) *error = "noise: reference_sigma must be > 0";
+  else if (!(max_scale >= 1.0)) *error = "noise: max_scale must be >= 1";
+  else if (!(gate > 0.0)) *error = "noise: gate must be > 0";
+  else return true;
+  return false;
+}
+
 bool FitOptions::IsValid(std::string* error) const {
   if (!(min_base_inlier_share >= 0.0 && min_base_inlier_share <= 1.0)) {
     if (error != nullptr) *error = "min_base_inlier_share must be in [0, 1]";
@@ -35,7 +43,8 @@ bool FitOptions::IsValid(std::string* error) const {
   return mixed_pixels.IsValid(error) && crop.IsValid(error) && edges.IsValid(error) &&
          stations.IsValid(error) && residuals.IsValid(error) && samples.IsValid(error) &&
          base.IsValid(error) && chain.IsValid(error) && refinement.chain.IsValid(error) &&
-         refinement.coverings.IsValid(error) && quality.IsValid(error);
+         refinement.coverings.IsValid(error) && quality.IsValid(error) && noise.IsValid(error) &&
+         base.voting.IsValid(error);
 }
 
 }  // namespace edgefit

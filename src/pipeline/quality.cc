@@ -34,6 +34,8 @@ const char* JointVerdictName(JointVerdict verdict) {
       return "not_seen";
     case JointVerdict::kMismatch:
       return "mismatch";
+    case JointVerdict::kGiven:
+      return "given";
   }
   return "mismatch";
 }
@@ -63,6 +65,25 @@ std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const Fi
                   "of the scanned surface (need %.0f%%), RMS %.2f mm",
                   b.link.c_str(), 100.0 * b.inlier_share, 1e3 * options.chain.joint_icp.final_gate,
                   100.0 * options.quality.min_inlier_share, 1e3 * b.rms);
+  } else if (b.unpinned) {
+    const bool prismatic = model.joints()[static_cast<size_t>(model.JointIndex(b.joint))].type ==
+                           JointType::kPrismatic;
+    const double scale = prismatic ? 1e3 : 180.0 / M_PI;
+    if (!std::isfinite(b.joint_std)) {
+      std::snprintf(line, sizeof(line),
+                    "%s is not pinned: %s = %.4f has no standard deviation (the covariance "
+                    "failed) on a scan this noisy",
+                    b.link.c_str(), b.joint.c_str(), value);
+      return line;
+    }
+    std::snprintf(line, sizeof(line),
+                  "%s is not pinned: %s = %.4f has a standard deviation of %.3f %s (at most %.3f); "
+                  "the scan's noise leaves it uncertain",
+                  b.link.c_str(), b.joint.c_str(), value, b.joint_std * scale,
+                  prismatic ? "mm" : "deg",
+                  (prismatic ? options.quality.max_joint_std_prismatic
+                             : options.quality.max_joint_std_revolute) *
+                      scale);
   } else if (b.better_elsewhere) {
     std::snprintf(line, sizeof(line),
                   "%s is in a wrong basin: %s = %.4f, with the joints below it fitted again "
@@ -108,6 +129,7 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     double best = q1;
     std::vector<double> turns = result->base_symmetry.turns;
     turns.push_back(0.0);
+    if (result->base_symmetry.round) turns.push_back(q1);  // any turn: zero
     for (const double t : turns) {
       for (int k = -2; k <= 2; ++k) {
         const double v = q1 - t + 2.0 * M_PI * k;
@@ -127,7 +149,8 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     const Joint& j = model.joints()[jj];
     unobservable[jj] =
         TurnIsUnobservable(model, record.joint, result->q, cad.icp, options.samples.icp_spacing,
-                           options.quality.observability, &off_share[jj]);
+                           options.quality.observability, &off_share[jj]) ||
+        (result->base_symmetry.round && record.joint == result->base_symmetry.joint);
     result->q[jj] = unobservable[jj] ? ZeroOrNearestLimit(j) : NearestZeroTurn(j, result->q[jj]);
   }
   (void)model.ResolveDependentJoints(&result->q);
@@ -165,6 +188,18 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
       quality.verdict = JointVerdict::kAmbiguous;
     } else {
       quality.verdict = JointVerdict::kOk;
+    }
+    const std::vector<double>& stds = result->chain_refinement.joint_std;
+    quality.joint_std = jj < stds.size() ? stds[jj] : std::nan("");
+    const double max_std = model.joints()[jj].type == JointType::kPrismatic
+                               ? options.quality.max_joint_std_prismatic
+                               : options.quality.max_joint_std_revolute;
+    // On noisy scans (a depth camera) a joint without a spread (the
+    // covariance failed) is no more pinned than one with a wide one.
+    const bool no_std = !std::isfinite(quality.joint_std) && result->noise_scale > 1.0;
+    if (quality.verdict == JointVerdict::kOk && (quality.joint_std > max_std || no_std)) {
+      quality.verdict = JointVerdict::kAmbiguous;
+      quality.unpinned = true;
     }
     quality.ok =
         quality.verdict == JointVerdict::kOk || quality.verdict == JointVerdict::kUnobservable;

@@ -73,22 +73,35 @@ json JointStatusJson(const KinematicModel& model, const FitResult& fit, const js
     json alternatives = json::array();
     switch (b.verdict) {
       case JointVerdict::kUnobservable:
+        if (fit.base_symmetry.round &&
+            model.joints()[static_cast<size_t>(fit.base_symmetry.joint)].name == b.joint) {
+          v["reason"] = "the base is round about its axis: its yaw and " + b.joint +
+                        " are one rotation, which no scan splits; reported at 0, the base "
+                        "turned to match";
+          break;
+        }
         v["reason"] = "the geometry it moves looks the same at every value (turned, at most " +
                       std::to_string(static_cast<int>(std::ceil(100.0 * b.turned_off_share))) +
                       "% of its samples leave the surface); reported at its zero or the limit "
                       "nearest it";
         break;
       case JointVerdict::kAmbiguous:
-        v["reason"] = b.better_elsewhere ? "another value fits the scan better"
-                                         : "another value fits the scan about as well";
-        alternatives.push_back(
-            {{"value", b.alternative_value}, {"loss_margin_m", NumberOrNull(b.ambiguity_margin)}});
+        v["reason"] = b.unpinned           ? "not pinned: its standard deviation is above the bar"
+                      : b.better_elsewhere ? "another value fits the scan better"
+                                           : "another value fits the scan about as well";
+        if (!b.unpinned) {
+          alternatives.push_back({{"value", b.alternative_value},
+                                  {"loss_margin_m", NumberOrNull(b.ambiguity_margin)}});
+        }
         break;
       case JointVerdict::kNotSeen:
         v["reason"] = "too few of its samples are visible at the fitted pose";
         break;
       case JointVerdict::kMismatch:
         v["reason"] = "its body does not match the scan";
+        break;
+      case JointVerdict::kGiven:
+        v["reason"] = "held at the value given (known joints), not fitted";
         break;
       case JointVerdict::kOk:
         break;
@@ -105,14 +118,16 @@ json JointStatusJson(const KinematicModel& model, const FitResult& fit, const js
         model.joints()[static_cast<size_t>(symmetry.joint)].name == b.joint) {
       const double q = fit.q[static_cast<size_t>(symmetry.joint)];
       std::string turns;
-      for (const double t : symmetry.turns) {
+      for (const double t : symmetry.round ? std::vector<double>() : symmetry.turns) {
         const int degrees = static_cast<int>(std::lround(t * 180.0 / M_PI));
         turns += (turns.empty() ? "" : ", ") + std::to_string(degrees);
         alternatives.push_back({{"value", std::remainder(q + t, 2.0 * M_PI)},
                                 {"loss_margin_m", 0.0},
                                 {"base_turn_deg", -degrees}});
       }
-      v["convention"] = "the base looks the same turned by " + turns + " deg about " + b.joint +
+      v["convention"] = "the base looks the same turned by " +
+                        (symmetry.round ? std::string("any angle") : turns + " deg") + " about " +
+                        b.joint +
                         "'s axis, so no scan tells the base's yaw from " + b.joint +
                         ": of those placements the one with " + b.joint +
                         " nearest zero is reported";
@@ -199,6 +214,7 @@ json FitResultJson(const KinematicModel& model, AssetKind kind, const FitOptions
             {"corrections", stations}}},
           {"timing_s", FitTimingsJson(fit.timings)},
           {"mixed_pixels_removed", fit.mixed_pixels},
+          {"noise", {{"sigma_m", fit.noise_sigma}, {"scale", fit.noise_scale}}},
           {"coverings",
            {{"matched", coverings.matched},
             {"covered", coverings.covered},

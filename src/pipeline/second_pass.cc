@@ -25,7 +25,7 @@ Status RefitWithoutCoverings(const KinematicModel& model, const ScanSet& scans,
   chain.set_covered_scan(&first_pass.sweep);
   const std::vector<double> q_with_coverings = result->q;
   ChainAttempt refit;
-  EDGEFIT_RETURN_IF_ERROR(FitChainFrom(model, base, base_samples, result->T_world_base, options,
+  EDGEFIT_RETURN_IF_ERROR(FitChainFrom(model, base, base_samples, {result->T_world_base}, options,
                                        &clean.icp, &chain, say, result, &refit));
   result->T_world_base = refit.T_world_base;
   result->bodies.front() = Quality(model, base, base_samples, refit.base, options.quality);

@@ -28,6 +28,16 @@ inline double Since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Whether the scans are a depth camera's frames (projective lattices).
+inline bool AnyCameraFrame(const ScanSet& scans) {
+  for (const OrganizedScan& scan : scans.scans) {
+    if (scan.lattice().valid() && scan.lattice().model() == ScanLattice::Model::kProjective) {
+      return true;
+    }
+  }
+  return false;
+}
+
 // The CAD samples of every link (model.links() order, link frame): dense
 // for the precise stages, sparse for the sweeps; and per body for the
 // whole-chain stages (stations, refinement, coverings), made once by
@@ -54,6 +64,14 @@ struct ScanTools {
   const JointSweep sweep;
 };
 
+// A rough base pose; `registered`: already registered to the scans with
+// the first links (any mounting: the base body alone, round on many arms,
+// would turn on its ICP), so the chain starts from it as it is.
+struct RoughPose {
+  Pose T_world_base = Pose::Identity();
+  bool registered = false;
+};
+
 // A fit of the base and the chain from one rough base pose.
 struct ChainAttempt {
   Pose T_world_base = Pose::Identity();
@@ -64,13 +82,13 @@ struct ChainAttempt {
   bool base_mismatch = false;  // FitOptions::min_base_inlier_share: the chain was not fitted
 };
 
-// Sec. 5.1.2 and 5.2-5.3 from T_rough: the base's precise weighted ICP
-// (base_samples: the base body's), then every joint, parents first
-// (`chain`, on the scans of `icp`). A base whose inlier share is below
+// Sec. 5.1.2 and 5.2-5.3 from `rough`: the base's precise weighted ICP
+// (base_samples: the base body's; for a registered rough pose its quality
+// alone), then every joint, parents first (`chain`, on the scans of `icp`). A base whose inlier share is below
 // FitOptions::min_base_inlier_share is a mismatch: the chain is not fitted
 // and the loss is infinite. Adds to result->timings.
 Status FitChainFrom(const KinematicModel& model, const Body& base,
-                    const SurfaceSamples& base_samples, const Pose& T_rough,
+                    const SurfaceSamples& base_samples, const RoughPose& rough,
                     const FitOptions& options, WeightedIcp* icp, ChainFitter* chain,
                     const ProgressFn& say, FitResult* result, ChainAttempt* attempt);
 
@@ -79,7 +97,8 @@ Status FitChainFrom(const KinematicModel& model, const Body& base,
 // are another machine's place); the lowest Eq. (9) loss of the whole model
 // wins (result->base_rough records the rough pose it came from).
 Status FitChainFromRoughPoses(const KinematicModel& model, const Body& base,
-                              const SurfaceSamples& base_samples, const std::vector<Pose>& roughs,
+                              const SurfaceSamples& base_samples,
+                              const std::vector<RoughPose>& roughs,
                               const FitOptions& options, WeightedIcp* icp, ChainFitter* chain,
                               const ProgressFn& say, FitResult* result, ChainAttempt* best);
 
@@ -98,14 +117,32 @@ Status RefitWithoutCoverings(const KinematicModel& model, const ScanSet& scans,
                              bool covered_link, const FitOptions& options, const ProgressFn& say,
                              FitResult* result);
 
+// Extension for noisy sensors (noise_scale.h): the base body registered
+// from T_rough with options.noise.gate fixed, sigma from its matches'
+// median distance into result->noise_sigma, the scale into
+// result->noise_scale, and *scaled: `options` with every distance threshold
+// scaled (`options` itself when options.noise.scale is off).
+Status MeasureNoise(const SurfaceSamples& base_samples, const Pose& T_rough,
+                    const FitOptions& options, WeightedIcp* icp, const ProgressFn& say,
+                    FitResult* result, FitOptions* scaled);
+
+// Any mounting (BaseOptions::Mounting; mounting_stage.cc): the base with
+// its first links voted for on oriented point pairs in several postures,
+// each vote registered, ranked by its body's Eq. (9) loss per sample; the
+// best BaseOptions::voted_roughs distinct poses into *roughs, best first.
+// Fails when no pair of the scans matches the model's.
+Status VoteBasePoses(const KinematicModel& model, const ScanSet& scans, const Body& base,
+                     const CadSamples& cad, const FitOptions& options, ScanTools* tools,
+                     const ProgressFn& say, std::vector<RoughPose>* roughs);
+
 // Sec. 5.1.1 / 6.1: the rough base poses to fit from, best first, into
 // *roughs (result->base_rough, arm_tips and base_rough_method record how):
 // from options.base's hint, or the rough stage of its method ranked by the
 // Eq. (9) loss of the base alone (base_hypotheses.h). An error means the
 // scan gave no base pose (the fit is not ok), never bad options.
 Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const Body& base,
-                      const CadSamples& cad, const JointSweep& sweep, const FitOptions& options,
-                      const ProgressFn& say, FitResult* result, std::vector<Pose>* roughs);
+                      const CadSamples& cad, ScanTools* tools, const FitOptions& options,
+                      const ProgressFn& say, FitResult* result, std::vector<RoughPose>* roughs);
 
 // The samples of every moving body (and the base) in its link's frame,
 // model.links() order (empty for links without a body of their own).

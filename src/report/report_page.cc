@@ -88,7 +88,7 @@ if (result.base) {
     const verdict = st ? st.verdict : 'dependent';
     const row = el('tr');
     row.append(el('td', {}, name), el('td', {}, fmt(result.joints[name] * f, 4) + unit),
-               el('td', {class: verdict === 'ok' || verdict === 'unobservable' || verdict === 'dependent'
+               el('td', {class: ['ok', 'unobservable', 'dependent', 'given'].includes(verdict)
                                     ? 'verdict-ok' : 'verdict-bad'}, verdict),
                el('td', {}, st && st.std !== null && st.std !== undefined ? fmt(st.std * f, 4) + unit : '–'));
     if (errors) row.append(el('td', {}, name in errors ? fmt(errors[name] * f, 4) + unit : '–'));

@@ -109,6 +109,35 @@ TEST(ObservabilityTest, BaseSymmetryOfSquareBasesAndNotOfTheKuka) {
   }
 }
 
+// A cobot's round base (a cylinder about its first joint's axis) looks
+// the same at any turn: round, so its first joint is reported at zero and
+// unobservable; the bundled robot's square plate only every quarter turn.
+TEST(ObservabilityTest, ARoundBaseIsRoundASquareOneIsNot) {
+  const std::string dir = ::testing::TempDir();
+  const std::string urdf = dir + "/round_base.urdf";
+  std::ofstream(urdf) << R"(<robot name="round">
+  <link name="base"><visual><geometry><cylinder radius="0.12" length="0.15"/></geometry>
+    <origin xyz="0 0 0.075"/></visual></link>
+  <link name="arm"><visual><geometry><box size="0.1 0.1 0.5"/></geometry>
+    <origin xyz="0.05 0 0.25"/></visual></link>
+  <joint name="joint_1" type="revolute"><parent link="base"/><child link="arm"/>
+    <origin xyz="0 0 0.15"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/>
+  </joint></robot>)";
+  for (const auto& [path, round] : {std::make_pair(urdf, true),
+                                    std::make_pair(std::string(EDGEFIT_SOURCE_DIR) +
+                                                       "/assets/robot/robot.urdf",
+                                                   false)}) {
+    KinematicModel model;
+    ASSERT_TRUE(LoadModelWithAttachments(path, {}, ModelLoadOptions(), &model).ok()) << path;
+    SamplingOptions sampling;
+    sampling.spacing = kSpacing;
+    const BaseSymmetry symmetry = FindBaseSymmetry(model, SampleModelSurfaces(model, sampling),
+                                                   kSpacing, ObservabilityOptions());
+    ASSERT_EQ(symmetry.joint, model.JointIndex("joint_1")) << path;
+    EXPECT_EQ(symmetry.round, round) << path;
+  }
+}
+
 TEST(ObservabilityTest, WholeTurnsOfAJointBeyondAFullTurn) {
   Joint a4;  // a KUKA axis 4: +-350 deg
   a4.type = JointType::kRevolute;

@@ -5,12 +5,18 @@
 #define EDGEFIT_MODEL_JOINT_VALUES_H_
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
 
 namespace edgefit {
+
+// The name=value pairs of "name=value,name=value" (values as above), in
+// order; no model checks. Fails on an item that is not name=value.
+Status ParseNamedValues(const std::string& text,
+                        std::vector<std::pair<std::string, double>>* values);
 
 // Sets independent joints in *q (size joints()) from "name=value,name=value".
 // Fails, naming the joint, on an unknown or dependent (mimic, loop-closure,

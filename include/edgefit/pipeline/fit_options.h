@@ -11,12 +11,14 @@
 
 #include "edgefit/core/pose.h"
 #include "edgefit/edges/edge_detector.h"
+#include "edgefit/model/frozen_joints.h"
 #include "edgefit/pipeline/instance_crop.h"
 #include "edgefit/scan/mixed_pixels.h"
 #include "solvers/base/base_hypotheses.h"
 #include "solvers/base/base_rough.h"
 #include "solvers/base/conveyance_base_rough.h"
 #include "solvers/base/floor_height.h"
+#include "solvers/base/pose_voting.h"
 #include "solvers/joints/body.h"
 #include "solvers/joints/chain_fitter.h"
 #include "solvers/joints/observability.h"
@@ -35,6 +37,29 @@ struct BaseOptions {
   // find no placement, the cross sections are tried.
   enum class Method { kCrossSections, kArmTips };
   Method method = Method::kCrossSections;
+  // How the base may be mounted. kUpright: standing on the floor, as the
+  // rough stages of Sec. 5.1.1 / 6.1 assume; kAny: anywhere, in any
+  // orientation (hanging, on a wall, on a wedge), found by pose voting
+  // (solvers/base/pose_voting.h, mounting_stage.cc); kAuto: the upright
+  // stage on laser scans, both on a depth camera's frames (a camera looks
+  // at robots mounted any way, from any side). Voting on a laser scan of a
+  // cell costs tens of seconds where the upright stage finds nothing (a
+  // scan without the robot): ask for it there (kAny).
+  enum class Mounting { kAuto, kUpright, kAny };
+  Mounting mounting = Mounting::kAuto;
+  PoseVotingOptions voting;
+  // The bodies voted for: the base with its first two joints' bodies, the
+  // first joint at zero, the second at this many values over its range
+  // (mounting_stage.cc).
+  int voting_joint_values = 9;
+  // Each voted pose (a voxel and 12 degrees off) is registered (at most
+  // voted_icp_samples, point to plane, the gate from two voxels down to
+  // NoiseOptions::gate, at most voted_icp_iterations iterations), then
+  // ranked by its body's Eq. (9) loss per sample; the best voted_roughs
+  // distinct ones are fitted through the whole chain.
+  int voted_icp_iterations = 15;
+  int voted_icp_samples = 3000;
+  int voted_roughs = 4;
   // The floor both rough stages and the hint stand the base on.
   FloorOptions floor;
   BaseRoughOptions cross_sections;      // its seed is FitOptions::seed
@@ -78,6 +103,29 @@ struct QualityOptions {
   size_t min_visible_samples = 30;
   // Which revolute joints the geometry cannot pin (a bare round flange).
   ObservabilityOptions observability;
+  // A joint whose joint_std (the covariance, with the CAD's and the
+  // sensor's correlated deviation) is above this is not pinned: ambiguous.
+  // Three std within the bars of a wrong answer said ok (4 deg, 3 mm). On
+  // laser scans the stds are 0.01-0.1 deg and at most 0.5 mm; a depth
+  // camera's centimetre of correlated error leaves some joints degrees.
+  double max_joint_std_revolute = 4.0 / 3.0 * M_PI / 180.0;  // [rad]
+  double max_joint_std_prismatic = 0.001;                    // [m]
+
+  bool IsValid(std::string* error) const;
+};
+
+// The scans' noise, measured where the fit meets the model, and the fit's
+// distance thresholds scaled to it (noise_scale.h).
+struct NoiseOptions {
+  bool scale = true;
+  // At or below this sigma [m] every threshold stays as measured on laser
+  // scans (their 1 mm noise, 0.5-2 mm as-built surfaces and up to 4 mm of
+  // incidence noise measure 1-3 mm here); above it they grow in proportion.
+  double reference_sigma = 0.003;
+  double max_scale = 15.0;
+  // The measuring registration's fixed gate [m]: wide enough for a
+  // centimetre of noise on both sides, narrow enough to leave the floor.
+  double gate = 0.04;
 
   bool IsValid(std::string* error) const;
 };
@@ -85,6 +133,10 @@ struct QualityOptions {
 struct FitOptions {
   // Seed of the CAD sampling and of every RANSAC.
   uint64_t seed = 1;
+  // Joints held at given values [rad] or [m] (frozen_joints.h): the fit
+  // fits the others; with every joint given it fits the base alone
+  // (camera-to-robot calibration). Their verdict is "given".
+  KnownJoints known_joints;
   // Uniform weights (w_edge = 1) in every stage instead of Eq. (6)'s (the
   // paper's edge weights, w_high at the scan's edge points): the
   // correspondence search is then given no weights. On by default: measured
@@ -145,6 +197,7 @@ struct FitOptions {
   ChainOptions chain;
   RefinementOptions refinement;
   QualityOptions quality;
+  NoiseOptions noise;
 
   bool IsValid(std::string* error) const;
 };

@@ -25,7 +25,8 @@ namespace edgefit {
 //                 convention, joint_std null; does not make the fit not ok
 //  kNotSeen       too few of its samples are visible at the fitted pose
 //  kMismatch      its body does not match the scan
-enum class JointVerdict { kOk, kAmbiguous, kUnobservable, kNotSeen, kMismatch };
+// kGiven: held at a value the user gave (FitOptions::known_joints).
+enum class JointVerdict { kOk, kAmbiguous, kUnobservable, kNotSeen, kMismatch, kGiven };
 const char* JointVerdictName(JointVerdict verdict);
 
 struct BodyQuality {
@@ -59,6 +60,10 @@ struct BodyQuality {
   // the same (a revolute joint with a range beyond a full turn): the
   // reported value is the one nearest the joint's zero.
   std::vector<double> whole_turns;
+  // Not pinned: joint_std above QualityOptions::max_joint_std_* (then
+  // ambiguous).
+  bool unpinned = false;
+  double joint_std = std::numeric_limits<double>::quiet_NaN();  // [rad] or [m]
   bool ok = false;  // the body matches and the verdict is ok or unobservable
 };
 
@@ -95,6 +100,10 @@ struct FitResult {
   CoveringSummary coverings;
   // Cells removed as mixed pixels before Sec. 4 (FitOptions::remove_mixed_pixels).
   size_t mixed_pixels = 0;
+  // The scans' noise where the fit met the model (noise_scale.h): sigma
+  // [m] (0: not measured) and the scale of the distance thresholds.
+  double noise_sigma = 0.0;
+  double noise_scale = 1.0;
   // The base's symmetry (observability.h): its joint is reported at the
   // placement nearest zero; the others are the same geometry.
   BaseSymmetry base_symmetry;

@@ -1,0 +1,76 @@
+#include "edgefit/pipeline/noise_scale.h"
+
+#include <algorithm>
+
+namespace edgefit {
+namespace {
+
+// A threshold grown by k, and at least `floor`.
+double Grow(double value, double k, double floor) { return std::max(value * k, floor); }
+
+// The final gate (the ICP's occlusion tolerance too: a sample counts as
+// hidden when the scan lies nearer by more than it) grows with the noise,
+// to at least `floor` (3 sigma: a tolerance inside the noise drops the
+// samples whose points fell nearer, a bias away from the sensor); the first
+// gate covers the error of the estimate the stage starts from, which does
+// not grow: only to stay above the final one.
+void Scale(double k, double floor, WeightedIcpOptions* icp) {
+  icp->final_gate = Grow(icp->final_gate, k, floor);
+  icp->correspondence.max_distance = std::max(icp->correspondence.max_distance, icp->final_gate);
+  icp->quality_reach *= k;
+  icp->quality_max_view_gap *= k;
+}
+
+void Scale(double k, double floor, JointSweepOptions* sweep) {
+  sweep->tau_dist *= k;
+  sweep->max_distance = std::max(sweep->max_distance, 2.0 * sweep->tau_dist);
+  sweep->occluded_loss *= k;
+  sweep->visibility_tolerance = Grow(sweep->visibility_tolerance, k, floor);
+  sweep->max_view_gap *= k;
+}
+
+}  // namespace
+
+double NoiseScaleFor(double sigma, const NoiseOptions& options) {
+  if (!options.scale || !(sigma > 0.0)) return 1.0;
+  return std::clamp(sigma / options.reference_sigma, 1.0, options.max_scale);
+}
+
+FitOptions ScaledToNoise(const FitOptions& options, double sigma) {
+  FitOptions scaled = options;
+  const double k = NoiseScaleFor(sigma, options.noise);
+  if (k == 1.0) return scaled;
+  const double floor = 3.0 * sigma;
+  Scale(k, floor, &scaled.base.icp);
+  ChainOptions& chain = scaled.chain;
+  Scale(k, floor, &chain.sweep);
+  Scale(k, floor, &chain.joint_icp);
+  Scale(k, floor, &chain.subtree_icp);
+  chain.flat_sweep_loss *= k;
+  chain.ambiguity_check_loss *= k;
+  chain.ambiguity_mean_loss *= k;
+  chain.explained_distance *= k;
+  chain.pinning_mean_loss *= k;
+  RefinementOptions& refinement = scaled.refinement;
+  Scale(k, floor, &refinement.chain.icp);
+  refinement.chain.visibility_tolerance = Grow(refinement.chain.visibility_tolerance, k, floor);
+  // The sensor's error is correlated over the surface (a depth camera's
+  // matcher smooths it: 0.8 mm from pixel to pixel on the ZED 2i frames,
+  // 11 mm against the CAD): in the covariance each patch deviates as a
+  // whole, as the CAD's own deviation does.
+  refinement.chain.cad_deviation = std::max(refinement.chain.cad_deviation, sigma);
+  refinement.coverings.gate *= k;
+  refinement.coverings.area_offset *= k;
+  refinement.coverings.point_offset *= k;
+  StationAlignmentOptions& stations = scaled.stations;
+  stations.final_gate = Grow(stations.final_gate, k, floor);
+  stations.max_distance = std::max(stations.max_distance, stations.final_gate);
+  stations.huber_scale *= k;
+  stations.point_sigma *= k;
+  scaled.quality.max_rms *= k;
+  scaled.quality.observability.surface_tolerance *= k;
+  scaled.mixed_pixels.tolerance *= k;
+  return scaled;
+}
+
+}  // namespace edgefit
