@@ -3,8 +3,9 @@
 
 A set is a folder in this layout (see ../shared/data/real/*/SOURCE.txt):
   frames/NNN.pcd        organized depth frame (or frames/NNN_depth.png with camera_info.yaml)
-  truth/NNN.json        "joints" (rad, URDF names) the robot recorded, "references" (names of
-                        reference base poses) and "T_world_base_<name>" or "T_world_base_reference"
+  truth/NNN.json        "joints" (rad, URDF names) the robot recorded; "references" (name: 4x4
+                        T_world_base) or "T_world_base_reference"; "reference_method" (the one
+                        the figures use)
   robot/NAME.urdf       the robot's model with its meshes
   camera_info.yaml      the camera's ROS CameraInfo (passed as --camera_info)
 
@@ -23,6 +24,7 @@ import json
 import math
 import os
 import subprocess
+import xml.etree.ElementTree as ET
 import sys
 import time
 
@@ -49,23 +51,56 @@ def pose_distance(t_fit, t_ref):
 
 def reference_poses(truth):
   """Reference base poses by name, in the frame's world (the PCD's VIEWPOINT frame)."""
-  poses = {}
-  t_world_camera = truth.get("T_world_camera")
-  for name in truth.get("references", []):
-    key = "T_world_base_" + name
-    if key in truth:
-      poses[name] = truth[key]
-    elif name == truth.get("reference_method") and "T_world_base_reference" in truth:
-      poses[name] = truth["T_world_base_reference"]
-    elif t_world_camera and "T_camera_base_" + name in truth:
-      poses[name] = mat_mul(t_world_camera, truth["T_camera_base_" + name])
-  if not poses and "T_world_base_reference" in truth:
-    poses[truth.get("reference_method", "reference")] = truth["T_world_base_reference"]
-  return poses
+  if isinstance(truth.get("references"), dict):
+    return dict(truth["references"])
+  return {truth.get("reference_method", "reference"): truth["T_world_base_reference"]}
 
 
-def run_fit(edgefit, set_dir, frame, out, extra):
-  urdf = sorted(glob.glob(os.path.join(set_dir, "robot", "*.urdf")))[0]
+def first_joint_about_base_z(urdf):
+  """The first joint's name when it turns about the root's z through its origin, else None."""
+  root = ET.parse(urdf).getroot()
+  children = {j.find("child").get("link") for j in root.findall("joint")}
+  roots = [l.get("name") for l in root.findall("link") if l.get("name") not in children]
+  for joint in root.findall("joint"):
+    if joint.find("parent").get("link") != roots[0] or joint.get("type") not in ("revolute", "continuous"):
+      continue
+    origin = joint.find("origin")
+    xyz = [float(v) for v in (origin.get("xyz", "0 0 0") if origin is not None else "0 0 0").split()]
+    rpy = [float(v) for v in (origin.get("rpy", "0 0 0") if origin is not None else "0 0 0").split()]
+    axis = [float(v) for v in joint.find("axis").get("xyz").split()]
+    if abs(xyz[0]) + abs(xyz[1]) + sum(map(abs, rpy)) < 1e-9 and abs(abs(axis[2]) - 1) < 1e-9:
+      return joint.get("name"), axis[2]
+  return None
+
+
+def turned_about_z(t, angle):
+  c, s = math.cos(angle), math.sin(angle)
+  return mat_mul(t, [[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
+
+
+def turned_frame(frame, degrees, out_dir):
+  """A copy of a PCD frame whose VIEWPOINT is turned by `degrees` about the world x (a frame
+  that looks as if the robot were mounted tilted), and the 4x4 turn."""
+  a = math.radians(degrees)
+  c, s = math.cos(a), math.sin(a)
+  turn = [[1, 0, 0, 0], [0, c, -s, 0], [0, s, c, 0], [0, 0, 0, 1]]
+  with open(frame, "rb") as f:
+    data = f.read()
+  begin = data.index(b"\nVIEWPOINT") + 1
+  end = data.index(b"\n", begin)
+  v = [float(x) for x in data[begin:end].split()[1:]]
+  w, x, y, z = v[3:]
+  hc, hs = math.cos(a / 2), math.sin(a / 2)  # turn quaternion (hc, hs, 0, 0) times the pose's
+  q = [hc * w - hs * x, hc * x + hs * w, hc * y - hs * z, hc * z + hs * y]
+  t = [sum(turn[r][k] * v[k] for k in range(3)) for r in range(3)]
+  out = os.path.join(out_dir, "turned_" + os.path.basename(frame))
+  with open(out, "wb") as f:
+    f.write(data[:begin] + ("VIEWPOINT %.9f %.9f %.9f %.9f %.9f %.9f %.9f" % tuple(t + q)).encode()
+            + data[end:])
+  return out, turn
+
+
+def run_fit(edgefit, set_dir, urdf, frame, out, extra):
   cmd = [edgefit, "fit", "--urdf=" + urdf, "--scan=" + frame, "--out=" + out]
   camera_info = os.path.join(set_dir, "camera_info.yaml")
   if os.path.exists(camera_info):
@@ -99,6 +134,8 @@ def main():
   parser.add_argument("--out", default="", help="folder for the result.json files (default: a temp dir)")
   parser.add_argument("--frames", default="", help="comma-separated frame numbers (default: all)")
   parser.add_argument("--modes", default="unknown,calibration")
+  parser.add_argument("--turn_deg", type=float, default=0.0,
+                      help="fit copies of the PCD frames whose VIEWPOINT is turned by this about x")
   args = parser.parse_args()
 
   if not os.path.isdir(os.path.join(args.set_dir, "frames")):
@@ -108,6 +145,7 @@ def main():
   out_dir = args.out or os.path.join("/tmp", "edgefit_real_%d" % os.getpid())
   os.makedirs(out_dir, exist_ok=True)
   wanted = {int(f) for f in args.frames.split(",") if f}
+  urdf = sorted(glob.glob(os.path.join(args.set_dir, "robot", "*.urdf")))[0]
 
   scores = {mode: {"found": 0, "frames": 0, "ok_errors": [], "first6": 0, "first6_ok": 0,
                    "confident_wrong": 0} for mode in args.modes.split(",")}
@@ -121,12 +159,15 @@ def main():
     with open(truth_path) as f:
       truth = json.load(f)
     references = reference_poses(truth)
+    if args.turn_deg:
+      frame, turn = turned_frame(frame, args.turn_deg, out_dir)
+      references = {k: mat_mul(turn, t) for k, t in references.items()}
     primary = truth.get("reference_method", next(iter(references)))
     for mode, score in scores.items():
       extra = []
       if mode == "calibration":
         extra.append("--joints=" + ",".join("%s=%.9f" % kv for kv in truth["joints"].items()))
-      result, seconds = run_fit(args.edgefit, args.set_dir, frame,
+      result, seconds = run_fit(args.edgefit, args.set_dir, urdf, frame,
                                 os.path.join(out_dir, "%s_%s.json" % (stem, mode)), extra)
       quality = result.get("quality", {})
       noise = result.get("noise", {})
@@ -135,7 +176,14 @@ def main():
           1e3 * noise.get("sigma_m", float("nan")), noise.get("scale", float("nan")),
           "ok" if quality.get("ok") else "not ok"))
       t_fit = result["base"]["T_world_base"]
+      first = first_joint_about_base_z(urdf)
+      round_base = first and "round" in result.get("joint_status", {}).get(first[0], {}).get("reason", "")
+      if round_base:  # yaw and first joint unobservable together: compare the first link
+        print("  (a round base: the base turned by %s against the turned reference)" % first[0])
+        t_fit = turned_about_z(t_fit, first[1] * result["joints"][first[0]])
       for name, t_ref in references.items():
+        if round_base:
+          t_ref = turned_about_z(t_ref, first[1] * truth["joints"][first[0]])
         mm, deg, tilt = pose_distance(t_fit, t_ref)
         print("  base vs %-13s %6.1f mm %6.2f deg (z axis %5.2f deg)" % (name, mm, deg, tilt))
         if name == primary:

@@ -19,6 +19,6 @@ edgefit_add_test(solvers_scan_test SINGLE_PROCESS
   SOURCES solvers/tube_outlier_test.cc solvers/joint_sweep_test.cc solvers/base_rough_test.cc
           solvers/floor_height_test.cc
           solvers/chain_refinement_test.cc solvers/final_basins_test.cc solvers/coverings_test.cc
-          solvers/pose_voting_test.cc
+          solvers/pose_voting_test.cc solvers/up_direction_test.cc
   LIBS edgefit::solvers edgefit::edges edgefit::scanner edgefit::scene edgefit::model glog::glog
        OpenMP::OpenMP_CXX)

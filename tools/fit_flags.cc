@@ -79,6 +79,10 @@ DEFINE_string(mounting, "auto",
               "of Sec. 5.1.1), any (hanging, on a wall, on a wedge: pose voting of the base and "
               "its first links), auto (upright on laser scans, both on a depth camera's "
               "frames).");
+DEFINE_string(up, "",
+              "Up in the scan's frame, x,y,z (any length): the upright base search levels the "
+              "scans to it. Default: the frame's z (a levelled laser scan, a frame's VIEWPOINT), "
+              "and on a depth camera's frame also the dominant floor or table plane's normal.");
 DEFINE_bool(noise_scale, true,
             "Scale every distance threshold (gates, tolerances, the verdict's RMS) to the "
             "noise measured where the base meets the scan (no change at 3 mm or less, as on laser "
@@ -119,6 +123,14 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   else if (FLAGS_mounting == "any") options->base.mounting = Mounting::kAny;
   else return Status::Error("--mounting must be auto, upright or any, not '" + FLAGS_mounting + "'");
   options->noise.scale = FLAGS_noise_scale;
+  if (!FLAGS_up.empty()) {
+    std::vector<double> up;
+    EDGEFIT_RETURN_IF_ERROR(ParseNumberList("up", FLAGS_up, 0.0, &up));
+    if (up.size() != 3 || !(Eigen::Vector3d(up[0], up[1], up[2]).norm() > 0.0)) {
+      return Status::Error("--up must be x,y,z, not all zero, not '" + FLAGS_up + "'");
+    }
+    options->base.up = Eigen::Vector3d(up[0], up[1], up[2]);
+  }
   if (!FLAGS_init.empty()) {
     double x = 0.0, y = 0.0, yaw = 0.0;
     EDGEFIT_RETURN_IF_ERROR(ParseXyYawDeg("--init", FLAGS_init, &x, &y, &yaw));
@@ -147,7 +159,7 @@ std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own, bool w
                            "cad_deviation_patch_mm", "incidence_cosine", "remove_mixed_pixels",
                            "refine_without_mixed_pixels", "mixed_pixel_tolerance_mm",
                            "mixed_pixel_lines", "mixed_pixel_neighbour_lines", "mounting",
-                           "noise_scale"}) {
+                           "noise_scale", "up"}) {
     own.emplace_back(flag);
   }
   return own;

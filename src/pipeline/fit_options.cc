@@ -11,8 +11,12 @@ WeightedIcpOptions BaseOptions::DefaultIcp() {
 }
 
 bool BaseOptions::IsValid(std::string* error) const {
+  if (!up.allFinite()) {
+    *error = "up must be finite";
+    return false;
+  }
   return floor.IsValid(error) && cross_sections.IsValid(error) && arm_tips.IsValid(error) &&
-         hypotheses.IsValid(error) && icp.IsValid(error);
+         hypotheses.IsValid(error) && icp.IsValid(error) && up_estimation.IsValid(error);
 }
 
 bool QualityOptions::IsValid(std::string* error) const {

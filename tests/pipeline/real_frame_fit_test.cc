@@ -14,9 +14,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "edgefit/io/camera_info.h"
 #include "edgefit/io/scan_io.h"
@@ -43,7 +42,8 @@ bool LoadFrame(const std::string& stem, RealFrame* frame) {
   EXPECT_TRUE(ReadCameraInfo(set + "camera_info.yaml", &read.camera).ok());
   EXPECT_TRUE(ReadScans(set + "frames/" + stem + ".pcd", read, &frame->scans).ok());
   EXPECT_TRUE(
-      LoadModelWithAttachments(set + "robot/med7.urdf", {}, ModelLoadOptions(), &frame->model).ok());
+      LoadModelWithAttachments(set + "robot/med7.urdf", {}, ModelLoadOptions(), &frame->model)
+          .ok());
   std::ifstream in(set + "truth/" + stem + ".json");
   frame->truth = nlohmann::json::parse(in);
   const auto& t = frame->truth["T_world_base_reference"];
@@ -76,8 +76,8 @@ TEST(RealFrameFitTest, CalibrationFromTheRecordedJoints) {
   const double deg = AngleDeg(fit.T_world_base, frame.T_world_base_reference);
   std::printf("  calibration: base %.1f mm, %.2f deg from the reference; noise %.1f mm\n", mm, deg,
               1e3 * fit.noise_sigma);
-  EXPECT_LT(mm, 15.0);  // measured 7.1 mm (2026-11-28)
-  EXPECT_LT(deg, 2.5);  // measured 1.94 deg
+  EXPECT_LT(mm, 15.0);              // measured 7.1 mm (2026-11-28)
+  EXPECT_LT(deg, 2.5);              // measured 1.94 deg
   EXPECT_GT(fit.noise_scale, 1.0);  // a stereo camera's centimetre is measured
 }
 
@@ -88,11 +88,13 @@ TEST(RealFrameFitTest, EveryJointFittedNothingConfidentlyWrong) {
   ASSERT_TRUE(Fit(frame.model, frame.scans, FitOptions(), nullptr, &fit).ok());
   const double mm = PositionErrorMm(fit.T_world_base, frame.T_world_base_reference);
   // The base is round: its yaw (with lbr_A1) is unobservable, its axis not.
-  const double tilt_deg = std::acos(std::clamp(
-      fit.T_world_base.rotation().col(2).dot(frame.T_world_base_reference.rotation().col(2)), -1.0,
-      1.0)) / kDeg;
+  const double tilt_deg =
+      std::acos(std::clamp(
+          fit.T_world_base.rotation().col(2).dot(frame.T_world_base_reference.rotation().col(2)),
+          -1.0, 1.0)) /
+      kDeg;
   std::printf("  every joint: base %.1f mm from the reference, its axis %.2f deg\n", mm, tilt_deg);
-  EXPECT_LT(mm, 30.0);      // measured 5.8 mm (2026-11-28)
+  EXPECT_LT(mm, 30.0);       // measured 5.8 mm (2026-11-28)
   EXPECT_LT(tilt_deg, 6.0);  // measured 3.8 deg: lbr_A2 and A3 lean against it
   for (const BodyQuality& body : fit.bodies) {
     if (body.joint.empty() || !frame.truth["joints"].contains(body.joint)) continue;

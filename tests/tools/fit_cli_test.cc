@@ -52,6 +52,11 @@ TEST_F(CliTest, FitWritesTheResultContract) {
                 result["timing_s"]["refine"].get<double>());
   EXPECT_TRUE(result["quality"]["ok"].get<bool>()) << result["quality"].dump();
   EXPECT_EQ(result["mixed_pixels_removed"].get<size_t>(), 0u);  // not asked for
+  // A laser scan: up is its z, its noise (1 mm) leaves every threshold as it is.
+  EXPECT_EQ(result["up"]["from"], "frame");
+  EXPECT_EQ(result["up"]["vector"][2].get<double>(), 1.0);
+  EXPECT_GT(result["noise"]["sigma_m"].get<double>(), 0.0);
+  EXPECT_EQ(result["noise"]["scale"].get<double>(), 1.0);
   // The options as given, defaults included.
   const nlohmann::json& options = result["options"];
   EXPECT_EQ(options["weighting"], "uniform");
@@ -161,6 +166,12 @@ TEST_F(CliTest, FitBadInput) {
                  "--weighting");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --init=1,2", "--init");
   ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --loss=l3", "l3");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --up=0,0,0", "--up must");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --up=0,1", "--up must");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --mounting=roof",
+                 "--mounting must");
+  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --joints=nope=1",
+                 "nope");
   ExpectBadInput("fit --urdf=" + conveyor + " --scan=" + sample + out + " --kind=crane",
                  "--kind must be auto, articulated or conveyance");
   ExpectBadInput(

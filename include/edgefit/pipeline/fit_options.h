@@ -19,6 +19,7 @@
 #include "solvers/base/conveyance_base_rough.h"
 #include "solvers/base/floor_height.h"
 #include "solvers/base/pose_voting.h"
+#include "solvers/base/up_direction.h"
 #include "solvers/joints/body.h"
 #include "solvers/joints/chain_fitter.h"
 #include "solvers/joints/observability.h"
@@ -60,6 +61,16 @@ struct BaseOptions {
   int voted_icp_iterations = 15;
   int voted_icp_samples = 3000;
   int voted_roughs = 4;
+  // Up for the upright stage: the world z (a levelled laser scan, a frame's
+  // pose) unless `up` is given (non-zero: the upright stage runs levelled
+  // to it alone). On a depth camera's frame with kAuto, up is also
+  // estimated from the dominant floor or table plane (up_estimation); when
+  // it is more than min_up_tilt from z, the upright stage runs a second
+  // time levelled to it and the chain tells the poses apart. Every pose
+  // stays in the scan's frame.
+  Eigen::Vector3d up = Eigen::Vector3d::Zero();
+  UpOptions up_estimation;  // its seed is FitOptions::seed
+  double min_up_tilt = 3.0 * M_PI / 180.0;  // [rad]
   // The floor both rough stages and the hint stand the base on.
   FloorOptions floor;
   BaseRoughOptions cross_sections;      // its seed is FitOptions::seed

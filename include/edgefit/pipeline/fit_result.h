@@ -104,6 +104,14 @@ struct FitResult {
   // [m] (0: not measured) and the scale of the distance thresholds.
   double noise_sigma = 0.0;
   double noise_scale = 1.0;
+  // Up of the upright stage (BaseOptions::up): "frame" (the world z),
+  // "given", or "plane" (estimated from the dominant floor or table plane
+  // of a depth camera's frame, more than min_up_tilt from z: the upright
+  // stage ran levelled to it too); up_plane_share: the share of the sampled
+  // points on that plane.
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  std::string up_from = "frame";
+  double up_plane_share = 0.0;
   // The base's symmetry (observability.h): its joint is reported at the
   // placement nearest zero; the others are the same geometry.
   BaseSymmetry base_symmetry;
