@@ -146,6 +146,7 @@ def main():
   os.makedirs(out_dir, exist_ok=True)
   wanted = {int(f) for f in args.frames.split(",") if f}
   urdf = sorted(glob.glob(os.path.join(args.set_dir, "robot", "*.urdf")))[0]
+  first = first_joint_about_base_z(urdf)
 
   scores = {mode: {"found": 0, "frames": 0, "ok_errors": [], "first6": 0, "first6_ok": 0,
                    "confident_wrong": 0} for mode in args.modes.split(",")}
@@ -176,7 +177,6 @@ def main():
           1e3 * noise.get("sigma_m", float("nan")), noise.get("scale", float("nan")),
           "ok" if quality.get("ok") else "not ok"))
       t_fit = result["base"]["T_world_base"]
-      first = first_joint_about_base_z(urdf)
       round_base = first and "round" in result.get("joint_status", {}).get(first[0], {}).get("reason", "")
       if round_base:  # yaw and first joint unobservable together: compare the first link
         print("  (a round base: the base turned by %s against the turned reference)" % first[0])

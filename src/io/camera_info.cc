@@ -3,8 +3,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <exception>
 #include <vector>
+
+#include "yaml_file.h"
 
 namespace edgefit {
 namespace {
@@ -76,19 +77,7 @@ Status Parse(const YAML::Node& root, CameraInfo* info) {
 }  // namespace
 
 Status ReadCameraInfo(const std::string& path, CameraInfo* info) {
-  *info = CameraInfo();
-  Status status = Status::Ok();
-  try {
-    status = Parse(YAML::LoadFile(path), info);
-  } catch (const YAML::BadFile&) {
-    status = Status::Error("cannot open the file");
-  } catch (const std::exception& e) {  // yaml-cpp's parser and conversion errors
-    status = Status::Error(std::string("not a camera_info YAML file: ") + e.what());
-  }
-  if (!status.ok()) {
-    *info = CameraInfo();
-    return Status::Error(path + ": " + status.message());
-  }
+  EDGEFIT_RETURN_IF_ERROR(ReadYamlFile(path, "a camera_info YAML file", Parse, info));
   info->source = path;
   return Status::Ok();
 }

@@ -3,7 +3,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <exception>
+
+#include "yaml_file.h"
 
 namespace edgefit {
 namespace {
@@ -30,20 +31,7 @@ Status Parse(const YAML::Node& root, std::vector<std::pair<std::string, double>>
 
 Status ReadJointStates(const std::string& path,
                        std::vector<std::pair<std::string, double>>* values) {
-  values->clear();
-  Status status = Status::Ok();
-  try {
-    status = Parse(YAML::LoadFile(path), values);
-  } catch (const YAML::BadFile&) {
-    status = Status::Error("cannot open the file");
-  } catch (const std::exception& e) {  // yaml-cpp's parser and conversion errors
-    status = Status::Error(std::string("not a joint_states YAML file: ") + e.what());
-  }
-  if (!status.ok()) {
-    values->clear();
-    return Status::Error(path + ": " + status.message());
-  }
-  return Status::Ok();
+  return ReadYamlFile(path, "a joint_states YAML file", Parse, values);
 }
 
 }  // namespace edgefit

@@ -25,13 +25,7 @@ using testing_util::TranslationError;
 
 constexpr double kDeg = M_PI / 180.0;
 
-// Link frame at the centre of the bottom face, z up.
-TriangleMesh RoundBase() {
-  TriangleMesh mesh;
-  mesh.Append(MakeCylinderMesh(0.30, 0.35, 96), PoseFromXyzRpy({0, 0, 0.175}, {0, 0, 0}));
-  mesh.Append(MakeBoxMesh({0.25, 0.20, 0.35}), PoseFromXyzRpy({0.32, 0, 0.175}, {0, 0, 0}));
-  return mesh;
-}
+using testing_util::RoundBaseWithBox;
 
 const Pose kTrueBasePose = PoseFromXyzRpy({1.2, -0.4, 0.0}, {0, 0, 0.7});
 
@@ -43,7 +37,7 @@ struct BaseScene {
 const BaseScene& GetScene() {
   static BaseScene* scene = [] {
     auto* out = new BaseScene;
-    VirtualScan scan = testing_util::ScanLinkOnFloor(RoundBase(), kTrueBasePose, {}, 5);
+    VirtualScan scan = testing_util::ScanLinkOnFloor(RoundBaseWithBox(), kTrueBasePose, {}, 5);
     out->scans = std::move(scan.scans);
     CHECK(
         EstimateFloorHeight(out->scans, Eigen::AlignedBox3d(), FloorOptions(), &out->floor_z).ok());
@@ -55,7 +49,7 @@ const BaseScene& GetScene() {
 void ExpectNearTruth(const BaseRoughOptions& options) {
   const BaseScene& s = GetScene();
   BaseRoughResult result;
-  const Status status = FitBaseRough(s.scans, s.floor_z, RoundBase(), options, &result);
+  const Status status = FitBaseRough(s.scans, s.floor_z, RoundBaseWithBox(), options, &result);
   ASSERT_TRUE(status.ok()) << status.message();
   const double t = TranslationError(result.T_world_base, kTrueBasePose);
   const double r = RotationErrorRad(result.T_world_base, kTrueBasePose);

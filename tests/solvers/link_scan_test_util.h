@@ -11,6 +11,7 @@
 
 #include "correspondence/correspondence_test_util.h"
 #include "edgefit/core/pose.h"
+#include "edgefit/model/primitive_meshes.h"
 #include "edgefit/model/triangle_mesh.h"
 #include "edgefit/scanner/scanner_placement.h"
 #include "edgefit/scanner/virtual_scanner.h"
@@ -18,6 +19,15 @@
 
 namespace edgefit {
 namespace testing_util {
+
+// A round robot base 0.35 m tall with a box on its side (a cable outlet),
+// link frame at the centre of the bottom face, z up.
+inline TriangleMesh RoundBaseWithBox() {
+  TriangleMesh mesh;
+  mesh.Append(MakeCylinderMesh(0.30, 0.35, 96), PoseFromXyzRpy({0, 0, 0.175}, {0, 0, 0}));
+  mesh.Append(MakeBoxMesh({0.25, 0.20, 0.35}), PoseFromXyzRpy({0.32, 0, 0.175}, {0, 0, 0}));
+  return mesh;
+}
 
 // Scans the floor, `link_mesh` posed at T_world_link (label: link 0) and
 // `others` (world frame, their own labels) with `options` (spacing, noise;

@@ -20,12 +20,10 @@ constexpr double kDeg = M_PI / 180.0;
 
 const ScanSet& LevelScans() {
   static const ScanSet* scans = [] {
-    TriangleMesh base;
-    base.Append(MakeCylinderMesh(0.30, 0.35, 96), PoseFromXyzRpy({0, 0, 0.175}, {0, 0, 0}));
-    base.Append(MakeBoxMesh({0.25, 0.20, 0.35}), PoseFromXyzRpy({0.32, 0, 0.175}, {0, 0, 0}));
-    return new ScanSet(
-        testing_util::ScanLinkOnFloor(base, PoseFromXyzRpy({1.2, -0.4, 0.0}, {0, 0, 0.7}), {}, 5)
-            .scans);
+    return new ScanSet(testing_util::ScanLinkOnFloor(testing_util::RoundBaseWithBox(),
+                                                     PoseFromXyzRpy({1.2, -0.4, 0.0}, {0, 0, 0.7}),
+                                                     {}, 5)
+                           .scans);
   }();
   return *scans;
 }
