@@ -5,16 +5,16 @@
 # e2e: the robot fit (paper Sec. 5) on the robot scene (4 mm, about 1.9 M
 # points): accuracy against the ground truth, thread-count determinism; and
 # the negative set (scans that do not hold the model as given).
-edgefit_add_test(robot_fit_test SINGLE_PROCESS E2E
+edgefit_add_test(robot_fit_test SINGLE_PROCESS E2E COST 90
   SOURCES pipeline/robot_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::scene edgefit::model glog::glog
        OpenMP::OpenMP_CXX)
-edgefit_add_test(negative_fit_test SINGLE_PROCESS E2E
+edgefit_add_test(negative_fit_test SINGLE_PROCESS E2E COST 330
   SOURCES pipeline/negative_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::scene edgefit::model glog::glog)
 # e2e: the conveyance pipeline (paper Sec. 6) on a scan of the bundled
 # conveyor; --kind=auto.
-edgefit_add_test(conveyance_fit_test SINGLE_PROCESS E2E
+edgefit_add_test(conveyance_fit_test SINGLE_PROCESS E2E COST 120
   SOURCES pipeline/conveyance_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)
 # e2e: a robot on a linear track (../shared/robots; skips without it): the
@@ -24,12 +24,12 @@ edgefit_add_test(linear_track_fit_test SINGLE_PROCESS E2E
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model)
 # e2e: the robot pipeline on a realistic scan: jackets, station residuals,
 # mixed pixels, incidence noise, as-built surfaces.
-edgefit_add_test(realistic_fit_test SINGLE_PROCESS E2E
+edgefit_add_test(realistic_fit_test SINGLE_PROCESS E2E COST 170
   SOURCES pipeline/realistic_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)
 # e2e: the cell fit: every instance of a model in a virtual cell, the
 # background left.
-edgefit_add_test(cell_fit_test SINGLE_PROCESS E2E
+edgefit_add_test(cell_fit_test SINGLE_PROCESS E2E COST 50
   SOURCES pipeline/cell_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)
 # The small-scene twins of the e2e fits above (8-10 mm spacing), a process
@@ -46,6 +46,6 @@ edgefit_add_test(pipeline_unit_test
 # e2e: a real depth frame of a real robot (../shared/data/real; skips
 # without it): the calibration with its recorded joints, and every joint
 # fitted, against the robot's readings.
-edgefit_add_test(real_frame_fit_test SINGLE_PROCESS E2E
+edgefit_add_test(real_frame_fit_test SINGLE_PROCESS E2E COST 65
   SOURCES pipeline/real_frame_fit_test.cc
   LIBS edgefit::pipeline edgefit::io edgefit::model nlohmann_json::nlohmann_json)

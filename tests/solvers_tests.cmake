@@ -15,7 +15,7 @@ edgefit_add_test(solvers_test
     solvers/observability_test.cc
     solvers/base_hypotheses_test.cc
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
-edgefit_add_test(solvers_scan_test SINGLE_PROCESS
+edgefit_add_test(solvers_scan_test SINGLE_PROCESS COST 300
   SOURCES solvers/tube_outlier_test.cc solvers/joint_sweep_test.cc solvers/base_rough_test.cc
           solvers/floor_height_test.cc
           solvers/chain_refinement_test.cc solvers/final_basins_test.cc solvers/coverings_test.cc
