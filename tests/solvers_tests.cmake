@@ -4,7 +4,8 @@
 # on virtual scans: the cable-tube outlier case with edges and
 # the Eq. (9) joint sweep; the floor and the rough base registration
 # (Sec. 5.1.1); the whole-chain refinement and its covariance on the
-# bundled robot; the final basin check bringing a flipped wrist back.
+# bundled robot; the final basin check bringing a flipped wrist back; the
+# pair sweep of a round arm and the bend below it.
 edgefit_add_test(solvers_test
   SOURCES
     solvers/link_motion_test.cc
@@ -14,11 +15,12 @@ edgefit_add_test(solvers_test
     solvers/body_test.cc
     solvers/observability_test.cc
     solvers/base_hypotheses_test.cc
+    solvers/pose_evidence_test.cc
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
 edgefit_add_test(solvers_scan_test SINGLE_PROCESS COST 300
   SOURCES solvers/tube_outlier_test.cc solvers/joint_sweep_test.cc solvers/base_rough_test.cc
           solvers/floor_height_test.cc
           solvers/chain_refinement_test.cc solvers/final_basins_test.cc solvers/coverings_test.cc
-          solvers/pose_voting_test.cc solvers/up_direction_test.cc
+          solvers/pose_voting_test.cc solvers/up_direction_test.cc solvers/pair_sweep_test.cc
   LIBS edgefit::solvers edgefit::edges edgefit::scanner edgefit::scene edgefit::model glog::glog
        OpenMP::OpenMP_CXX)

@@ -39,6 +39,10 @@ DEFINE_double(station_max_covered_share, 0.2,
 DEFINE_int32(covering_rounds, 2,
              "Rounds of the whole-chain refinement without the coverings found at the last "
              "estimate (jackets, covers: points off the CAD surface over an area); 0: none.");
+DEFINE_double(pair_sweep_deg, 5.0,
+              "On noisy scans (a depth camera's frame): a round body whose sweep with its "
+              "children is flat is swept again together with the joint that bends below it, on "
+              "a grid of this step over both ranges [deg]; 0: off.");
 DEFINE_double(visibility_tolerance_mm, 2.0,
               "The whole-chain refinement counts a CAD sample as seen when a scan's range at its "
               "cell is at most this much nearer than the sample [mm]: wider lets in samples just "
@@ -108,6 +112,7 @@ Status FitOptionsFromFlags(AssetKind kind, FitOptions* options) {
   options->stations.rounds = FLAGS_station_rounds;
   options->stations.max_covered_share = FLAGS_station_max_covered_share;
   options->refinement.coverings.rounds = FLAGS_covering_rounds;
+  options->chain.pair_sweep_step = FLAGS_pair_sweep_deg * M_PI / 180.0;
   options->refinement.chain.visibility_tolerance = FLAGS_visibility_tolerance_mm * 1e-3;
   options->refinement.chain.cad_deviation = FLAGS_cad_deviation_mm * 1e-3;
   options->refinement.chain.cad_deviation_patch = FLAGS_cad_deviation_patch_mm * 1e-3;
@@ -155,7 +160,7 @@ std::vector<std::string> WithFitOptionFlags(std::vector<std::string> own, bool w
   for (const char* flag : {"w_high", "loss", "loss_scale_mm", "lambda",
                            "parameterization", "refine_chain", "align_stations",
                            "station_rounds", "station_max_covered_share", "covering_rounds",
-                           "visibility_tolerance_mm", "cad_deviation_mm",
+                           "pair_sweep_deg", "visibility_tolerance_mm", "cad_deviation_mm",
                            "cad_deviation_patch_mm", "incidence_cosine", "remove_mixed_pixels",
                            "refine_without_mixed_pixels", "mixed_pixel_tolerance_mm",
                            "mixed_pixel_lines", "mixed_pixel_neighbour_lines", "mounting",

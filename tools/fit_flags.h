@@ -25,6 +25,7 @@ DECLARE_bool(align_stations);
 DECLARE_int32(station_rounds);
 DECLARE_double(station_max_covered_share);
 DECLARE_int32(covering_rounds);
+DECLARE_double(pair_sweep_deg);
 DECLARE_double(visibility_tolerance_mm);
 DECLARE_bool(remove_mixed_pixels);
 DECLARE_double(mixed_pixel_tolerance_mm);

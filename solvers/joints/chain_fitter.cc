@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "solvers/joints/pair_sweep.h"
+
 namespace edgefit {
 
 WeightedIcpOptions ChainOptions::DefaultJointIcp() {
@@ -45,6 +47,7 @@ bool ChainOptions::IsValid(std::string* error) const {
     return fail("final_basin_revolute and final_basin_prismatic must be > 0");
   }
   if (final_basin_rounds < 0) return fail("final_basin_rounds must be >= 0");
+  if (!(pair_sweep_step >= 0.0)) return fail("pair_sweep_step must be >= 0");
   if (!(explained_distance >= 0.0)) return fail("explained_distance must be >= 0");
   if (max_passes_after_switch < 0 || !(settle_tolerance_rad > 0.0) || !(settle_tolerance_m > 0.0)) {
     return fail("max_passes_after_switch must be >= 0 and the settle tolerances > 0");
@@ -314,11 +317,17 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
     ThinSamples(samples_.max_sweep_samples, &body_sweep);
     EDGEFIT_RETURN_IF_ERROR(sweep());
   }
+  if (record->symmetric && revolute && !local && options_.pair_sweep_step > 0.0 &&
+      record->sweep_margin < options_.flat_sweep_loss) {
+    const int bend = BendBelow(model_, record->joint, body.links, *q);
+    if (bend >= 0) {
+      EDGEFIT_RETURN_IF_ERROR(SweepWithTheBend(T_world_base, body, bend, q, record, &body_icp));
+    }
+  }
   LinkState state;
   state.q = record->sweep.q;
   WeightedIcpSummary summary;
-  EDGEFIT_RETURN_IF_ERROR(
-      FitOnJoint(icp_, body_icp, motion, options_.joint_icp, &state, &summary));
+  EDGEFIT_RETURN_IF_ERROR(FitOnJoint(icp_, body_icp, motion, options_.joint_icp, &state, &summary));
   record->icp_iterations = summary.iterations;
   (*q)[static_cast<size_t>(record->joint)] = NearestZeroTurn(motion, state.q);
   (void)model_.ResolveDependentJoints(q);
@@ -328,6 +337,33 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
                 j.name.c_str(), (*q)[static_cast<size_t>(record->joint)], record->sweep.q,
                 record->sweep.seconds, record->symmetric ? ", symmetric: children added" : "",
                 1e3 * record->sweep_margin, summary.BriefReport().c_str());
+  say_(line);
+  return Status::Ok();
+}
+
+Status ChainFitter::SweepWithTheBend(const Pose& T_world_base, const Body& body, int bend,
+                                     std::vector<double>* q, JointRecord* record,
+                                     SurfaceSamples* body_icp) const {
+  PairSweepSummary pair;
+  EDGEFIT_RETURN_IF_ERROR(SweepPair(model_, *sweep_, options_.sweep, T_world_base, *q, body, bend,
+                                    sweep_samples_, samples_.max_sweep_samples,
+                                    options_.pair_sweep_step, &pair));
+  record->sweep.q = pair.q;
+  (*q)[static_cast<size_t>(bend)] = pair.q_child;
+  // The joint's ICP carries the bend's whole body at its swept value.
+  const Joint& c = model_.joints()[static_cast<size_t>(bend)];
+  const std::vector<Pose> T = model_.ForwardKinematics(*q, T_world_base);
+  *body_icp = SurfaceSamples();
+  AppendBodySamples(body, icp_samples_, Pose::Identity(), body_icp);
+  AppendBodySamples(
+      MakeBody(model_, c.child_link, bend), icp_samples_,
+      T[static_cast<size_t>(body.link)].inverse() * T[static_cast<size_t>(c.child_link)], body_icp);
+  ThinSamples(samples_.max_icp_samples, body_icp);
+  char line[240];
+  std::snprintf(line, sizeof(line),
+                "chain: %s flat with its children: swept with %s, %.4f and %.4f (%d pairs, %.2f s)",
+                model_.joints()[static_cast<size_t>(record->joint)].name.c_str(), c.name.c_str(),
+                pair.q, pair.q_child, pair.evaluations, pair.seconds);
   say_(line);
   return Status::Ok();
 }

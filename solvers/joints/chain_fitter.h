@@ -44,6 +44,11 @@ struct ChainOptions {
   // runner-up (JointSweepOptions::distinct_revolute away) costing less than
   // this more per sample than the best [m]: the scan cannot tell them apart.
   double flat_sweep_loss = 0.0005;
+  // A symmetric body whose sweep with its children is still flat (below
+  // flat_sweep_loss) is swept again together with the bend below it
+  // (pair_sweep.h), on a grid of this step over both ranges [rad]; 0: off.
+  // The fit keeps it on noisy scans only (ScaledToNoise, noise_scale.h).
+  double pair_sweep_step = 5.0 * M_PI / 180.0;
   // The children a symmetric body carries: a revolute child adds only its
   // round part about its own axis (see body.h) when that holds at least
   // this share of its samples, else all of it at its current value.
@@ -274,6 +279,12 @@ class ChainFitter {
                    const JointSweep* sweep = nullptr) const;
 
  private:
+  // ChainOptions::pair_sweep_step: `record`'s joint and `bend` swept
+  // together (pair_sweep.h); the bend takes its swept value in *q and the
+  // joint's ICP samples (*body_icp) carry the bend's body at it.
+  Status SweepWithTheBend(const Pose& T_world_base, const Body& body, int bend,
+                          std::vector<double>* q, JointRecord* record,
+                          SurfaceSamples* body_icp) const;
   // The chain pass: per joint the Eq. (9) sweep and the joint ICP; a
   // symmetric body and every joint after it are swept again near their
   // values until none moves (a round wrist, then the flange and the gun).

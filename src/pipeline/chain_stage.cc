@@ -60,7 +60,11 @@ Status FitChainFromRoughPoses(const KinematicModel& model, const Body& base,
       say(line);
       continue;
     }
-    say("base: the whole chain from alternative rough pose " + std::to_string(k));
+    const Eigen::Vector3d& t = roughs[k].T_world_base.translation();
+    std::snprintf(line, sizeof(line),
+                  "base: the whole chain from alternative rough pose %zu at %.3f, %.3f, %.3f m",
+                  k, t.x(), t.y(), t.z());
+    say(line);
     ChainAttempt other;
     EDGEFIT_RETURN_IF_ERROR(FitChainFrom(model, base, base_samples, roughs[k], options, icp, chain,
                                          say, result, &other));

@@ -7,6 +7,7 @@
 
 #include "solvers/base/base_hypotheses.h"
 #include "solvers/base/pose_voting.h"
+#include "solvers/base/pose_evidence.h"
 #include "stages.h"
 
 namespace edgefit {
@@ -82,7 +83,8 @@ std::vector<SurfaceSamples> VotingBodies(const KinematicModel& model, const Body
 
 struct ScoredPose {
   Pose T_world_base = Pose::Identity();
-  double loss = 0.0;  // Eq. (9) per sample of the voted body
+  double evidence = 0.0;  // PoseEvidence::Share of the voted body
+  double loss = 0.0;      // Eq. (9) per sample of the voted body
 };
 
 }  // namespace
@@ -101,8 +103,11 @@ Status VoteBasePoses(const KinematicModel& model, const ScanSet& scans, const Bo
   register_vote.final_gate = options.noise.gate;
   register_vote.max_iterations = options.base.voted_icp_iterations;
   register_vote.point_to_plane = true;
-  // Ranked by Eq. (9) with tau_dist at the noise gate: noise of a
-  // centimetre puts most samples of the right pose beyond the sweep's 1 cm.
+  // Ranked by their evidence (pose_evidence.h): inliers within the sweep's
+  // tau_dist, seen and hidden at the noise gate (a centimetre of noise puts
+  // the right pose's surface beyond 1 cm behind or in front of the scan's);
+  // ties by the Eq. (9) loss with tau_dist at the gate.
+  const double inlier = options.chain.sweep.tau_dist;
   JointSweepOptions rank = options.chain.sweep;
   rank.tau_dist = rank.occluded_loss = rank.visibility_tolerance = options.noise.gate;
   rank.max_distance = std::max(rank.max_distance, options.noise.gate);
@@ -121,14 +126,19 @@ Status VoteBasePoses(const KinematicModel& model, const ScanSet& scans, const Bo
       WeightedIcpSummary registered;
       EDGEFIT_RETURN_IF_ERROR(
           tools->icp.Fit(few, LinkMotion::Free(), register_vote, &state, &registered));
-      const double loss = tools->sweep.LossAt(few, state.T_world_link, rank);
-      scored.push_back({state.T_world_link, loss / static_cast<double>(few.size())});
+      std::vector<float> losses;
+      const double loss = tools->sweep.LossAt(few, state.T_world_link, rank, &losses);
+      PoseEvidence evidence;
+      evidence.Add(losses, inlier, rank.max_distance);
+      scored.push_back(
+          {state.T_world_link, evidence.Share(), loss / static_cast<double>(few.size())});
     }
     voted_poses += voted.size();
   }
   if (scored.empty()) return Status::Error("no pair of scan points matches the model's");
-  std::stable_sort(scored.begin(), scored.end(),
-                   [](const ScoredPose& a, const ScoredPose& b) { return a.loss < b.loss; });
+  std::stable_sort(scored.begin(), scored.end(), [](const ScoredPose& a, const ScoredPose& b) {
+    return a.evidence != b.evidence ? a.evidence > b.evidence : a.loss < b.loss;
+  });
   for (const ScoredPose& s : scored) {
     if (static_cast<int>(roughs->size()) >= options.base.voted_roughs) break;
     const bool distinct = std::all_of(roughs->begin(), roughs->end(), [&s](const RoughPose& r) {
@@ -139,10 +149,11 @@ Status VoteBasePoses(const KinematicModel& model, const ScanSet& scans, const Bo
   char line[300];
   std::snprintf(line, sizeof(line),
                 "base: any mounting: %zu poses voted for %zu postures of the base and its first "
-                "links on %zu scan points (%.1f cm voxels), each registered; the best %.2f mm "
-                "per sample (Eq. 9), %zu kept; %.2f s",
-                voted_poses, bodies.size(), scene.size(), 100.0 * voxel, 1e3 * scored.front().loss,
-                roughs->size(), Since(start));
+                "links on %zu scan points (%.1f cm voxels), each registered; the best: "
+                "evidence %.3f (inliers less free space), %.2f mm per sample (Eq. 9); %zu kept; "
+                "%.2f s",
+                voted_poses, bodies.size(), scene.size(), 100.0 * voxel, scored.front().evidence,
+                1e3 * scored.front().loss, roughs->size(), Since(start));
   say(line);
   return Status::Ok();
 }

@@ -252,6 +252,7 @@ json FitOptionsJson(const FitOptions& options) {
           {"station_rounds", options.stations.rounds},
           {"station_max_covered_share", options.stations.max_covered_share},
           {"covering_rounds", options.refinement.coverings.rounds},
+          {"pair_sweep_step_rad", options.chain.pair_sweep_step},
           {"visibility_tolerance_m", options.refinement.chain.visibility_tolerance},
           {"cad_deviation_m", options.refinement.chain.cad_deviation},
           {"cad_deviation_patch_m", options.refinement.chain.cad_deviation_patch},

@@ -128,8 +128,9 @@ Status MeasureNoise(const SurfaceSamples& base_samples, const Pose& T_rough,
 
 // Any mounting (BaseOptions::Mounting; mounting_stage.cc): the base with
 // its first links voted for on oriented point pairs in several postures,
-// each vote registered, ranked by its body's Eq. (9) loss per sample; the
-// best BaseOptions::voted_roughs distinct poses into *roughs, best first.
+// each vote registered, ranked by its body's evidence (pose_evidence.h),
+// ties by its Eq. (9) loss per sample; the best BaseOptions::voted_roughs
+// distinct poses into *roughs, best first.
 // Fails when no pair of the scans matches the model's.
 Status VoteBasePoses(const KinematicModel& model, const ScanSet& scans, const Body& base,
                      const CadSamples& cad, const FitOptions& options, ScanTools* tools,

@@ -64,6 +64,7 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   EXPECT_DOUBLE_EQ(options["incidence_cosine"].get<double>(), 0.0);  // off
   EXPECT_TRUE(options["align_stations"].get<bool>());
   EXPECT_EQ(options["covering_rounds"].get<int>(), 2);
+  EXPECT_DOUBLE_EQ(options["pair_sweep_step_rad"].get<double>(), 5.0 * M_PI / 180.0);
   EXPECT_FALSE(options["remove_mixed_pixels"].get<bool>());
   EXPECT_FALSE(options["refine_without_mixed_pixels"].get<bool>());
   EXPECT_EQ(options["mixed_pixels"]["neighbour_lines"].get<int>(), 0);

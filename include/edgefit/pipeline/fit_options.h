@@ -56,8 +56,9 @@ struct BaseOptions {
   // Each voted pose (a voxel and 12 degrees off) is registered (at most
   // voted_icp_samples, point to plane, the gate from two voxels down to
   // NoiseOptions::gate, at most voted_icp_iterations iterations), then
-  // ranked by its body's Eq. (9) loss per sample; the best voted_roughs
-  // distinct ones are fitted through the whole chain.
+  // ranked by its body's samples' evidence (seen within the sweep's
+  // tau_dist, less those seen in free space; mounting_stage.cc); the best
+  // voted_roughs distinct ones are fitted through the whole chain.
   int voted_icp_iterations = 15;
   int voted_icp_samples = 3000;
   int voted_roughs = 4;
