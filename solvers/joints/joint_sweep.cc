@@ -47,7 +47,8 @@ double JointSweep::SampleLoss(const Eigen::Vector3d& p, const Eigen::Vector3d* n
   const Correspondence m = lattice_->Nearest(p.cast<float>(), options.lattice_window, max_d2);
   // A seen sample without a scan point within max_distance: D = max_distance, w = 1.
   if (m.scan < 0) return SweepLoss(options.max_distance, 1.0, options.tau_dist);
-  const double w = std::max(1.0, static_cast<double>(m.weight));  // uniform: a search without weights
+  const double w =
+      std::max(1.0, static_cast<double>(m.weight));  // uniform: a search without weights
   return SweepLoss(static_cast<double>(m.distance), w, options.tau_dist);
 }
 
@@ -70,6 +71,28 @@ double JointSweep::LossAt(const SurfaceSamples& samples, const Pose& T_world_lin
   return loss;
 }
 
+void SweptRange(const LinkMotion& motion, double* lower, double* upper) {
+  *lower = motion.lower;
+  *upper = motion.upper;
+  if (!motion.has_limits) {  // continuous joint: one turn (prismatic: none in URDF)
+    *lower = -M_PI;
+    *upper = M_PI;
+  } else if (motion.type == LinkMotion::Type::kRevolute && *upper - *lower > 2.0 * M_PI) {
+    // Over a turn of range: every pose has a value within one turn (the one
+    // nearest zero when the limits hold it), so sweep that turn only.
+    *lower = std::max(*lower, std::min(-M_PI, *upper - 2.0 * M_PI));
+    *upper = *lower + 2.0 * M_PI;
+  }
+}
+
+std::vector<double> SweepValues(double lower, double upper, double step) {
+  std::vector<double> values;
+  const int n = static_cast<int>(std::floor((upper - lower) / step + 1e-9));
+  for (int k = 0; k <= n; ++k) values.push_back(lower + k * step);
+  if (values.back() < upper - 1e-12) values.push_back(upper);
+  return values;
+}
+
 Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion,
                          const JointSweepOptions& options, JointSweepSummary* summary) const {
   CHECK(summary != nullptr);
@@ -81,16 +104,8 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
   *summary = JointSweepSummary();
 
   const bool revolute = motion.type == LinkMotion::Type::kRevolute;
-  double lower = motion.lower, upper = motion.upper;
-  if (!motion.has_limits) {  // continuous joint: one turn (prismatic: none in URDF)
-    lower = -M_PI;
-    upper = M_PI;
-  } else if (revolute && upper - lower > 2.0 * M_PI) {
-    // Over a turn of range: every pose has a value within one turn (the one
-    // nearest zero when the limits hold it), so sweep that turn only.
-    lower = std::max(lower, std::min(-M_PI, upper - 2.0 * M_PI));
-    upper = lower + 2.0 * M_PI;
-  }
+  double lower, upper;
+  SweptRange(motion, &lower, &upper);
   const double coarse = revolute ? options.revolute_step : options.prismatic_step;
   // Losses of several joint values, in parallel: each is a serial sum, so
   // the result does not depend on the thread count.
@@ -104,10 +119,8 @@ Status JointSweep::Sweep(const SurfaceSamples& samples, const LinkMotion& motion
     summary->evaluations += static_cast<int>(n);
   };
   // The coarse profile over the whole range.
-  std::vector<double> qs, losses;
-  const int steps = static_cast<int>(std::floor((upper - lower) / coarse + 1e-9));
-  for (int k = 0; k <= steps; ++k) qs.push_back(lower + k * coarse);
-  if (qs.back() < upper - 1e-12) qs.push_back(upper);
+  const std::vector<double> qs = SweepValues(lower, upper, coarse);
+  std::vector<double> losses;
   evaluate_all(qs, &losses);
   // Coarse to fine around a start: +/- one step at a tenth of it.
   auto refine = [&](double q, double loss, double* best_q, double* best_loss) {

@@ -76,6 +76,13 @@ struct JointSweepSummary {
   double seconds = 0.0;
 };
 
+// The range a sweep of `motion` covers [rad] or [m]: its limits; one turn
+// for a continuous joint, and for a revolute range over a turn the turn
+// nearest zero that the limits hold.
+void SweptRange(const LinkMotion& motion, double* lower, double* upper);
+// lower, lower + step, ..., upper (upper always included).
+std::vector<double> SweepValues(double lower, double upper, double step);
+
 class JointSweep {
  public:
   // Borrowed: the scans' lattice search (organized scans) and visibility.

@@ -7,29 +7,6 @@
 #include <string>
 
 namespace edgefit {
-namespace {
-
-// A revolute joint's swept range: its limits, one turn when continuous or
-// when the limits span more than a turn.
-void SweptRange(const Joint& joint, double* lower, double* upper) {
-  *lower = joint.has_limits ? joint.lower : -M_PI;
-  *upper = joint.has_limits ? joint.upper : M_PI;
-  if (*upper - *lower > 2.0 * M_PI) {
-    *lower = std::max(*lower, std::min(-M_PI, *upper - 2.0 * M_PI));
-    *upper = *lower + 2.0 * M_PI;
-  }
-}
-
-// lower, lower + step, ..., upper (upper always included).
-std::vector<double> Steps(double lower, double upper, double step) {
-  std::vector<double> values;
-  const int n = static_cast<int>(std::floor((upper - lower) / step + 1e-9));
-  for (int k = 0; k <= n; ++k) values.push_back(lower + k * step);
-  if (values.back() < upper - 1e-12) values.push_back(upper);
-  return values;
-}
-
-}  // namespace
 
 int BendBelow(const KinematicModel& model, int joint, const std::vector<int>& links,
               const std::vector<double>& q) {
@@ -77,8 +54,8 @@ Status SweepPair(const KinematicModel& model, const JointSweep& sweep,
   ThinSamples(std::max(1, max_samples / 4), &coarse_child);
   *summary = PairSweepSummary();
   double lower, upper, child_lower, child_upper;
-  SweptRange(j, &lower, &upper);
-  SweptRange(c, &child_lower, &child_upper);
+  SweptRange(LinkMotion::FromJoint(j, Pose::Identity()), &lower, &upper);
+  SweptRange(LinkMotion::FromJoint(c, Pose::Identity()), &child_lower, &child_upper);
   const size_t body_link = static_cast<size_t>(j.child_link);
   const size_t child_link = static_cast<size_t>(c.child_link);
   // Both bodies' loss at a pair of values, the other joints at q.
@@ -109,14 +86,15 @@ Status SweepPair(const KinematicModel& model, const JointSweep& sweep,
     summary->q = as[best / bs.size()];
     summary->q_child = bs[best % bs.size()];
   };
-  best_of(coarse_body, coarse_child, Steps(lower, upper, step),
-          Steps(child_lower, child_upper, step));
+  best_of(coarse_body, coarse_child, SweepValues(lower, upper, step),
+          SweepValues(child_lower, child_upper, step));
   for (int refinement = 0; refinement < 2; ++refinement) {
     const double fine = step / 5.0;
-    best_of(body_samples, child_samples,
-            Steps(std::max(lower, summary->q - step), std::min(upper, summary->q + step), fine),
-            Steps(std::max(child_lower, summary->q_child - step),
-                  std::min(child_upper, summary->q_child + step), fine));
+    best_of(
+        body_samples, child_samples,
+        SweepValues(std::max(lower, summary->q - step), std::min(upper, summary->q + step), fine),
+        SweepValues(std::max(child_lower, summary->q_child - step),
+                    std::min(child_upper, summary->q_child + step), fine));
     step = fine;
   }
   summary->seconds =

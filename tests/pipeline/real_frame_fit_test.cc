@@ -118,7 +118,7 @@ void FitEveryJoint(const std::string& stem, double mm_bound, double tilt_bound_d
 
 TEST(RealFrameFitTest, EveryJointFittedNothingConfidentlyWrong) {
   std::map<std::string, double> errors;
-  // Measured 6.0 mm, axis 3.2 deg (2026-11-28): lbr_A2 and A3 lean against it.
+  // Measured 6.3 mm, axis 3.2 deg (2026-11-28): lbr_A2 and A3 lean against it.
   FitEveryJoint("003", 30.0, 6.0, &errors);
   if (errors.empty()) return;  // skipped
   // The wrist: with the pair sweep (pair_sweep.h) lbr_A5 and A6 came 3.5

@@ -203,9 +203,9 @@ TEST(SmallSceneFitTest, CellFindsBothRobots) {
   // What this twin guards is the cell's search, removal and background; the
   // stations' registration and the coverings run under the sanitizers in
   // RealisticRobotWithJacketsRunsEveryStage. Without them the case takes 9 s
-  // instead of 15 (release, alone) and 89 s instead of 136 under ASan +
-  // UBSan (alone; beside the other tests it had taken up to 300 s, the
-  // limit CI gave it then).
+  // instead of 15 (release, alone) and 89 s under ASan + UBSan (alone; an
+  // earlier sanitized run took 136 s with them, and beside the other tests
+  // CI had seen it pass 300 s, its limit then).
   model.options.stations.align = false;
   model.options.refinement.coverings.rounds = 0;
   ScanSet scans = cell.scans;
