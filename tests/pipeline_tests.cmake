@@ -32,6 +32,11 @@ edgefit_add_test(realistic_fit_test SINGLE_PROCESS E2E COST 170
 edgefit_add_test(cell_fit_test SINGLE_PROCESS E2E COST 50
   SOURCES pipeline/cell_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)
+# e2e: the robot seen by a virtual depth camera (scanner/depth_camera.h),
+# fitted as a real frame is: any mounting, noise-scaled verdicts.
+edgefit_add_test(depth_frame_fit_test SINGLE_PROCESS E2E COST 40
+  SOURCES pipeline/depth_frame_fit_test.cc
+  LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::model glog::glog)
 # The small-scene twins of the e2e fits above (8-10 mm spacing), a process
 # each (they run in parallel; each scans its own scene).
 edgefit_add_test(small_scene_fit_test

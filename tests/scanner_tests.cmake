@@ -6,6 +6,7 @@ edgefit_add_test(scanner_test
     scanner/truth_test.cc
     scanner/placement_and_joints_test.cc
     scanner/edge_metrics_test.cc
+    scanner/depth_camera_test.cc
   LIBS edgefit::scanner edgefit::io OpenMP::OpenMP_CXX)
 # Posed URDF models, incl. the real KUKA in ${EDGEFIT_SHARED_DIR} (skipped when absent).
 edgefit_add_test(scanner_model_test

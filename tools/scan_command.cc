@@ -1,6 +1,7 @@
 // edgefit scan: the virtual TLS scanner (paper Sec. 7.3). Poses a URDF model
 // (optionally with attachments and accessories) on the floor, adds a floor and
-// clutter, places scanners around it and casts one ray per grid cell.
+// clutter, places scanners around it and casts one ray per grid cell; with
+// --camera_info, a depth camera at each place (depth_camera.h).
 //   edgefit scan --urdf=F [--attach=...] (--joints=... | --posture=P.json:NAME |
 //                --random_pose) [--seed=N] [--base=x,y,yaw_deg] [--accessories]
 //                [--scanners=N] [--spacing_mm=1.7] [--noise_mm=1]
@@ -18,6 +19,7 @@
 #include "commands.h"
 #include "common_flags.h"
 #include "edgefit/core/split_mix64.h"
+#include "edgefit/io/camera_info.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
@@ -180,7 +182,19 @@ Status ScanOptionsFromFlags(const Eigen::AlignedBox3d& box, AssetScanOptions* op
   options->scan.max_range = FLAGS_max_range_m;
   options->scan.full_dome = FLAGS_full_dome;
   options->seed = FLAGS_seed;
-  return SensorOptionsFromFlags(FLAGS_sensor, options);
+  EDGEFIT_RETURN_IF_ERROR(SensorOptionsFromFlags(FLAGS_sensor, options));
+  if (!FLAGS_camera_info.empty()) {  // a depth camera looking at the asset
+    CameraInfo info;
+    EDGEFIT_RETURN_IF_ERROR(ReadCameraInfo(FLAGS_camera_info, &info));
+    DepthCameraOptions& camera = options->scan.camera;
+    camera.width = info.width;
+    camera.height = info.height;
+    camera.camera = info.camera;
+    camera.sigma_at_1m = FLAGS_noise_mm * 1e-3;
+    options->scan.beam = camera.FlyingPixelBeam();
+    options->station_residuals.enabled = false;  // one camera, one frame
+  }
+  return Status::Ok();
 }
 
 // The truth of one asset of a scan made with `options`.
@@ -314,6 +328,8 @@ Command ScanCommand() {
           "               [--base=x,y,yaw_deg] [--accessories] [--scanners=3 | --scanner_at=x,y,z[,yaw]:...]\n"
           "               [--spacing_mm=1.7]"
           " [--noise_mm=1] [--sensor=ideal|realistic] [--beam=faro_focus] [--jackets]\n"
+          "               [--camera_info=C.yaml: a depth camera at each scanner place, looking at the asset;\n"
+          "                --noise_mm is then its depth noise at 1 m, growing with depth^2]\n"
           "               --out=F.ptx|F.e57|F.pcd --truth=F.json [--labels=F.bin]\n"
           "  edgefit scan --scene=cell.json [the options above but the model's] --out=cell.e57 "
           "--truth=cell_truth.json\n"
@@ -322,7 +338,7 @@ Command ScanCommand() {
           "    --posture=assets/robot/postures.json:weld_low --accessories --seed=7 \\\n"
           "    --out=robot.ptx --truth=robot_truth.json --labels=robot_labels.bin",
           {"urdf", "scene", "attach", "joints", "posture", "random_pose", "seed", "base", "accessories",
-           "scanners", "scanner_at", "spacing_mm", "noise_mm", "sensor", "beam", "jackets", "max_range_m", "full_dome", "clutter", "out",
+           "scanners", "scanner_at", "camera_info", "spacing_mm", "noise_mm", "sensor", "beam", "jackets", "max_range_m", "full_dome", "clutter", "out",
            "truth", "labels", "threads"},
           &RunScan};
 }

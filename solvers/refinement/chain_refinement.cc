@@ -212,44 +212,34 @@ void Covariance(double cost, double cad_deviation, const SurfacePatches& patches
   summary->sigma = std::sqrt(2.0 * cost / static_cast<double>(residuals - parameters));
   const double variance = summary->sigma * summary->sigma;
   // A joint or base direction the residuals do not pin (a link seen by no
-  // scanner) makes J^T J singular: its deviation is undetermined. Checked
-  // here (eigenvalues of J^T J below 1e-12 of the largest, singular values of
-  // J below 1e-6) so that ceres::Covariance is only asked when it can answer
-  // (it logs an error otherwise).
+  // scanner, a round base's yaw with its first joint) makes J^T J singular:
+  // the parameters in such a direction get no deviation, the others theirs
+  // from the pseudo-inverse (surface_patches.h).
   ceres::CRSMatrix jacobian;
   chain->problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &jacobian);
   Eigen::MatrixXd H_inverse;
-  if (!InverseNormalMatrix(jacobian, &H_inverse)) return;
+  std::vector<bool> estimable;
+  if (!InverseNormalMatrix(jacobian, &H_inverse, &estimable)) return;
   const Eigen::MatrixXd cad = patches.Covariance(jacobian, H_inverse, cad_deviation);
-  ceres::Covariance::Options covariance_options;
-  covariance_options.algorithm_type = ceres::DENSE_SVD;
-  covariance_options.num_threads = 1;
-  ceres::Covariance covariance(covariance_options);
-  const double* base = chain->delta_base;
-  const double* joints = chain->q_independent.data();
-  std::vector<std::pair<const double*, const double*>> blocks = {{base, base}};
-  if (chain->has_joints()) blocks.emplace_back(joints, joints);
-  if (!covariance.Compute(blocks, &chain->problem)) return;  // rank-deficient
-  double base_covariance[36];
-  covariance.GetCovarianceBlock(base, base, base_covariance);
+  auto std_of = [&](int column) {
+    return estimable[static_cast<size_t>(column)]
+               ? std::sqrt(variance * H_inverse(column, column) + cad(column, column))
+               : std::nan("");
+  };
   for (int i = 0; i < 3; ++i) {
-    summary->base_rotation_std[i] = std::sqrt(variance * base_covariance[i * 6 + i] + cad(i, i));
-    summary->base_translation_std[i] =
-        std::sqrt(variance * base_covariance[(i + 3) * 6 + i + 3] + cad(i + 3, i + 3));
+    summary->base_rotation_std[i] = std_of(i);
+    summary->base_translation_std[i] = std_of(i + 3);
   }
-  const size_t n = independent.size();
-  if (n > 0) {
-    std::vector<double> joint_covariance(n * n);
-    covariance.GetCovarianceBlock(joints, joints, joint_covariance.data());
-    for (size_t k = 0; k < n; ++k) {
-      const size_t j = static_cast<size_t>(independent[k]);
-      const int column = 6 + static_cast<int>(k);
-      summary->joint_std_residuals[j] = std::sqrt(variance * joint_covariance[k * n + k]);
-      summary->joint_std[j] =
-          std::sqrt(variance * joint_covariance[k * n + k] + cad(column, column));
-    }
+  for (size_t k = 0; k < independent.size(); ++k) {
+    const size_t j = static_cast<size_t>(independent[k]);
+    const int column = 6 + static_cast<int>(k);
+    summary->joint_std_residuals[j] =
+        estimable[static_cast<size_t>(column)] ? std::sqrt(variance * H_inverse(column, column))
+                                               : std::nan("");
+    summary->joint_std[j] = std_of(column);
   }
-  summary->covariance_ok = true;
+  summary->covariance_ok =
+      std::all_of(estimable.begin(), estimable.end(), [](bool e) { return e; });
 }
 
 }  // namespace

@@ -95,11 +95,15 @@ struct ChainRefinementSummary {
   double final_cost = 0.0;     // Ceres cost at the estimate returned
   // Largest distance any sample moved from the sequential fit's estimate [m].
   double max_displacement = 0.0;
-  // Covariance: computed (false when the problem is rank-deficient, a joint
-  // the scan does not pin, or covariance is off).
+  // Covariance: every parameter has a deviation (false when covariance is
+  // off, or when some direction of the problem is pinned by no residual: a
+  // joint the scan does not pin, a round base's yaw with its first joint;
+  // the parameters outside such directions still have theirs).
   bool covariance_ok = false;
   double sigma = 0.0;             // residual standard deviation s [m]
-  std::vector<double> joint_std;  // per joint, model order [rad] or [m]; NaN: not a parameter
+  // Per joint, model order [rad] or [m]; NaN: not a parameter, or one the
+  // residuals do not pin (surface_patches.h InverseNormalMatrix).
+  std::vector<double> joint_std;
   // The part of joint_std the residuals alone give (s^2 H^-1): a lower bound.
   std::vector<double> joint_std_residuals;
   Eigen::Vector3d base_rotation_std = Eigen::Vector3d::Constant(NAN);     // world axes [rad]

@@ -7,7 +7,8 @@
 
 namespace edgefit {
 
-bool InverseNormalMatrix(const ceres::CRSMatrix& jacobian, Eigen::MatrixXd* H_inverse) {
+bool InverseNormalMatrix(const ceres::CRSMatrix& jacobian, Eigen::MatrixXd* H_inverse,
+                         std::vector<bool>* estimable) {
   Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(jacobian.num_cols, jacobian.num_cols);
   for (int row = 0; row < jacobian.num_rows; ++row) {
     const int begin = jacobian.rows[static_cast<size_t>(row)];
@@ -21,9 +22,23 @@ bool InverseNormalMatrix(const ceres::CRSMatrix& jacobian, Eigen::MatrixXd* H_in
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(JtJ);
   const Eigen::VectorXd& eigenvalues = eigen.eigenvalues();
-  if (!(eigenvalues.minCoeff() > 1e-12 * eigenvalues.maxCoeff())) return false;
-  *H_inverse = eigen.eigenvectors() * eigenvalues.cwiseInverse().asDiagonal() *
-               eigen.eigenvectors().transpose();
+  const Eigen::MatrixXd& V = eigen.eigenvectors();
+  const double largest = eigenvalues.maxCoeff();
+  if (!(largest > 0.0)) return false;
+  Eigen::VectorXd inverse = Eigen::VectorXd::Zero(eigenvalues.size());
+  Eigen::VectorXd null_share = Eigen::VectorXd::Zero(eigenvalues.size());  // per parameter
+  for (Eigen::Index i = 0; i < eigenvalues.size(); ++i) {
+    if (eigenvalues[i] > 1e-12 * largest) {
+      inverse[i] = 1.0 / eigenvalues[i];
+    } else {
+      null_share += V.col(i).cwiseAbs2();
+    }
+  }
+  *H_inverse = V * inverse.asDiagonal() * V.transpose();
+  estimable->resize(static_cast<size_t>(eigenvalues.size()));
+  for (Eigen::Index k = 0; k < eigenvalues.size(); ++k) {
+    (*estimable)[static_cast<size_t>(k)] = null_share[k] <= 1e-4;
+  }
   return true;
 }
 

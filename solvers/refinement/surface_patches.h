@@ -25,9 +25,15 @@
 
 namespace edgefit {
 
-// H^-1 = (J^T J)^-1 of a problem's Jacobian; false (nothing written) when
-// J^T J is singular: an eigenvalue below 1e-12 of the largest.
-bool InverseNormalMatrix(const ceres::CRSMatrix& jacobian, Eigen::MatrixXd* H_inverse);
+// H^-1 = (J^T J)^+ of a problem's Jacobian: its pseudo-inverse over the
+// eigen-directions above 1e-12 of the largest eigenvalue (the others are
+// directions no residual pins: a joint that moves nothing seen, a round
+// base's yaw with its first joint). estimable[k]: parameter k has at most
+// 1e-4 of its unit vector in those directions, so its variance s^2 H^+_kk is
+// that of an estimable parameter; the others have none. False (nothing
+// written) for a zero Jacobian.
+bool InverseNormalMatrix(const ceres::CRSMatrix& jacobian, Eigen::MatrixXd* H_inverse,
+                         std::vector<bool>* estimable);
 
 // The patch of every residual row of a problem, in the problem's order.
 class SurfacePatches {

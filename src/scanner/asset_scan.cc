@@ -139,6 +139,13 @@ Status ScanCell(const std::vector<CellAsset>& assets, const AssetScanOptions& op
     placement.seed = AssetScanSeed(options.seed, AssetScanStream::kPlacement);
     scanners = PlaceScanners(cell_box, placement);
   }
+  if (options.scan.camera.enabled()) {  // a depth camera at each place, looking at the cell
+    for (Pose& T : scanners) {
+      if (!LookAt(T.translation(), cell_box.center(), Eigen::Vector3d::UnitZ(), &T)) {
+        return Status::Error("asset scan: a camera at the cell's centre or right above it");
+      }
+    }
+  }
   VirtualScanOptions scan = options.scan;
   scan.seed = AssetScanSeed(options.seed, AssetScanStream::kNoise);
   std::string error;

@@ -1,5 +1,6 @@
-// The angular window of a virtual scan: options validation, the default
-// asset box and the exact lattice of each scanner (virtual_scanner.h).
+// The window of a virtual scan: options validation, the default asset box
+// and the exact lattice of each scanner (virtual_scanner.h): the angular
+// window around the asset, or a depth camera's pixel grid.
 #include <algorithm>
 #include <cmath>
 
@@ -34,7 +35,7 @@ bool VirtualScanOptions::IsValid(std::string* error) const {
   }
   if (max_cells_per_scan < 1) return fail("max_cells_per_scan must be >= 1");
   std::string part;
-  if (!beam.IsValid(&part) || !range_noise.IsValid(&part)) {
+  if (!beam.IsValid(&part) || !range_noise.IsValid(&part) || !camera.IsValid(&part)) {
     if (error != nullptr) *error = part;
     return false;
   }
@@ -57,6 +58,10 @@ Status MakeScanLattice(const Eigen::AlignedBox3d& asset_box_world, const Pose& T
   std::string error;
   if (!options.IsValid(&error)) return Status::Error("virtual scan: " + error);
   if (asset_box_world.isEmpty()) return Status::Error("virtual scan: empty asset box");
+  if (options.camera.enabled()) {  // a depth camera: its pixel grid, whatever it sees
+    *lattice = ScanLattice(options.camera.height, options.camera.width, options.camera.camera);
+    return Status::Ok();
+  }
   const Pose T_scanner_world = T_world_scanner.inverse();
   const Eigen::Vector3d c_scanner = T_scanner_world * asset_box_world.center();
   const double distance = c_scanner.norm();

@@ -145,24 +145,35 @@ Status VirtualScanner::Scan(const std::vector<Pose>& T_world_scanner,
     std::vector<uint16_t> labels(scan.size(), kLabelMissing);
 
     // Direction tables: d_scanner(row, col) = (ce ca, ce sa, se), exactly
-    // ScanLattice::Direction for a level lattice (R_scanner_lattice = I).
+    // ScanLattice::Direction for a level lattice (R_scanner_lattice = I);
+    // a camera's pixel rays, per cell.
+    const DepthCameraOptions& camera = options.camera;
     std::vector<double> cos_el(rows), sin_el(rows), cos_az(cols), sin_az(cols);
-    for (int r = 0; r < rows; ++r) {
-      cos_el[r] = std::cos(lattice.elevation(r));
-      sin_el[r] = std::sin(lattice.elevation(r));
+    std::vector<Eigen::Vector3d> pixel_rays;
+    if (camera.enabled()) {
+      pixel_rays.resize(scan.size());
+      for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < cols; ++c) pixel_rays[scan.Index(r, c)] = lattice.Direction(r, c);
+      }
+    } else {
+      for (int r = 0; r < rows; ++r) {
+        cos_el[r] = std::cos(lattice.elevation(r));
+        sin_el[r] = std::sin(lattice.elevation(r));
+      }
+      for (int c = 0; c < cols; ++c) {
+        cos_az[c] = std::cos(lattice.azimuth(c));
+        sin_az[c] = std::sin(lattice.azimuth(c));
+      }
     }
-    for (int c = 0; c < cols; ++c) {
-      cos_az[c] = std::cos(lattice.azimuth(c));
-      sin_az[c] = std::sin(lattice.azimuth(c));
-    }
-    auto direction = [&](int r, int c) {
+    auto direction = [&](int r, int c) -> Eigen::Vector3d {
+      if (camera.enabled()) return pixel_rays[scan.Index(r, c)];
       return Eigen::Vector3d(cos_el[r] * cos_az[c], cos_el[r] * sin_az[c], sin_el[r]);
     };
     const Eigen::Matrix3d R = T.linear();
     const Eigen::Vector3d o_world = T.translation();
     const double sigma = options.noise_sigma;
     const uint64_t seed = options.seed;
-    const double step = std::min(lattice.row_step(), lattice.col_step());
+    const double step = std::min(std::abs(lattice.row_step()), std::abs(lattice.col_step()));
 
     const auto start = std::chrono::steady_clock::now();
     // Pass 1: the central ray of every cell.
@@ -278,7 +289,12 @@ Status VirtualScanner::Scan(const std::vector<Pose>& T_world_scanner,
         }
         // Range noise from (seed, scan, cell) only: thread-count independent.
         double range = ret.range;
-        if (sigma > 0.0) {
+        if (camera.enabled()) {  // depth noise: the depth z moves by sigma_z(z) n
+          const double z = ret.range * d_scanner.z();
+          if (camera.sigma_at_1m > 0.0 && z > 0.0) {
+            range += camera.sigma_at_1m * z * z * camera.NoiseDraw(seed, s, r, c) / d_scanner.z();
+          }
+        } else if (sigma > 0.0) {
           const uint64_t h1 = scanner_internal::CounterHash(seed, 2 * s, cell);
           const uint64_t h2 = scanner_internal::CounterHash(seed, 2 * s + 1, cell);
           range += sigma * noise_model.NoiseFactor(signal) * scanner_internal::StandardNormal(h1, h2);

@@ -63,6 +63,10 @@ struct BodyQuality {
   // Not pinned: joint_std above QualityOptions::max_joint_std_* (then
   // ambiguous).
   bool unpinned = false;
+  // A body between the base and this joint (the base's included) does not
+  // match the scan or is not seen: the joint's value is relative to links
+  // the scan does not confirm, so it is not trusted (then ambiguous).
+  bool chain_unmatched = false;
   double joint_std = std::numeric_limits<double>::quiet_NaN();  // [rad] or [m]
   bool ok = false;  // the body matches and the verdict is ok or unobservable
 };

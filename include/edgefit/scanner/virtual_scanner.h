@@ -1,6 +1,8 @@
 // Virtual terrestrial laser scanner (paper Sec. 7.3): ray casts a Scene from
 // each scanner pose into an organized scan, one ray per (elevation, azimuth)
-// grid cell with the first hit kept, so occlusion is real.
+// grid cell with the first hit kept, so occlusion is real. With
+// VirtualScanOptions::camera, a depth camera: one ray per pixel of its
+// projective lattice (depth_camera.h).
 //
 // Per cell (row, col) with unit direction d_scanner from the scan's exact
 // ScanLattice (scanner frame, level: lattice frame = scanner frame):
@@ -39,6 +41,7 @@
 #include "edgefit/core/status.h"
 #include "edgefit/scan/organized_scan.h"
 #include "edgefit/scanner/beam_footprint.h"
+#include "edgefit/scanner/depth_camera.h"
 #include "edgefit/scanner/range_noise.h"
 #include "edgefit/scene/scene.h"
 
@@ -74,6 +77,12 @@ struct VirtualScanOptions {
   // Range noise and dropouts by incidence and reflectance (range_noise.h);
   // default: noise_sigma everywhere, no dropouts.
   RangeNoiseOptions range_noise;
+  // A depth camera instead of the laser scanner (depth_camera.h): one ray
+  // per pixel, the scanner pose is the camera's optical frame, spacing,
+  // noise_sigma, full_dome and the window are unused; its depth noise
+  // replaces the range noise. Set beam to camera.FlyingPixelBeam() for
+  // its flying pixels.
+  DepthCameraOptions camera;
   // Embree RTC_SCENE_FLAG_ROBUST (slower; avoids rare misses on shared edges).
   bool robust = false;
   uint64_t seed = 1;
