@@ -139,7 +139,7 @@ TEST(DepthCameraTest, FlyingPixelsFloatAtSilhouettesOnlyWithAFootprint) {
   EXPECT_EQ(ideal_between, 0u);
   EXPECT_EQ(ideal_flagged, 0u);
   const auto [between, flagged] = floating(2.0);
-  // The box's outline is about 4 x 90 pixels long at 0.85 m.
+  // The box's outline is about 4 x 106 pixels long at 0.85 m (300 px / m at 1 m).
   EXPECT_GT(between, 100u);
   EXPECT_GE(flagged, between / 2);
 }

@@ -24,7 +24,8 @@
 // surfaces, as the matcher's window mixes them.
 //
 // Defaults: a ZED 2i class stereo camera; the real Med7 frames of
-// ../shared/data/real measure 4.5-11.6 mm at 1.5-2.2 m.
+// ../shared/data/real measure 4.5-11.6 mm, their base 1.65 m from the
+// camera.
 #ifndef EDGEFIT_SCANNER_DEPTH_CAMERA_H_
 #define EDGEFIT_SCANNER_DEPTH_CAMERA_H_
 
