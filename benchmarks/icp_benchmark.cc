@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bundled_robot_scan.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/surface_sampler.h"
 #include "solvers/registration/weighted_icp.h"
@@ -27,8 +28,6 @@ namespace {
 #ifndef EDGEFIT_SOURCE_DIR
 #define EDGEFIT_SOURCE_DIR "."
 #endif
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct Fixture {
   BundledRobotScan robot;

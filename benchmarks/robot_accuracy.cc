@@ -30,6 +30,7 @@
 
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/pipeline/asset_kind.h"
@@ -67,7 +68,6 @@ DEFINE_bool(progress, false, "Print the fit's progress lines (stderr).");
 namespace edgefit {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 using Case = BenchCase;
 
 struct FitRecord {

@@ -16,15 +16,19 @@ phase() {  # prints the time of the phase that just ended
 mode=release
 if [[ "${1:-}" == "--sanitize" ]]; then mode=sanitize; shift; fi
 ctest_args=()
+# Unity builds (16 sources per translation unit) parse the Eigen, Ceres and
+# GoogleTest headers once per batch: 265 s instead of 439 s for the release
+# build from an empty compiler cache on 2 cores.
+unity=(-DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16)
 if [[ $mode == release ]]; then
   build_dir=build/test
-  ./scripts/build.sh "$build_dir" Release -DEDGEFIT_WERROR=ON -DEDGEFIT_BUILD_BENCHMARKS=ON
+  ./scripts/build.sh "$build_dir" Release -DEDGEFIT_WERROR=ON -DEDGEFIT_BUILD_BENCHMARKS=ON "${unity[@]}"
 else
   build_dir=build/sanitize
   # -O1 -g1 (line tables: the sanitizers' stack traces keep file and line)
   # compiles in half the time of -O2 -g.
   ./scripts/build.sh "$build_dir" RelWithDebInfo -DEDGEFIT_WERROR=ON -DEDGEFIT_SANITIZE=ON \
-    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "${unity[@]}"
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   ctest_args=(-LE e2e)

@@ -142,8 +142,7 @@ int RunBatch(const Command& command) {
     const auto job_start = std::chrono::steady_clock::now();
     std::string error;
     const int code = RunChild(job.args, &error);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - job_start).count();
+    const double seconds = SecondsSince(job_start);
     std::string verdict;
     if (code != kExitOk) {
       ++failed;
@@ -159,8 +158,7 @@ int RunBatch(const Command& command) {
     RecordOutcome(job, code, error);
     std::fflush(stdout);
   }
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total = SecondsSince(start);
   std::printf("batch: shard %d/%d, %zu of %zu jobs: %zu done (%d not ok), %d failed in %.1f s\n",
               shard, shards, mine.size(), jobs.size(), mine.size() - failed, not_ok, failed, total);
   for (const std::string& name : failures) std::printf("  failed: %s\n", name.c_str());

@@ -13,6 +13,7 @@
 
 #include "common_flags.h"
 #include "edgefit/bench/bench_case.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/core/format.h"
 #include "edgefit/report/tables_report.h"
@@ -21,8 +22,6 @@ namespace edgefit::tools {
 namespace {
 
 using nlohmann::json;
-
-constexpr double kDeg = M_PI / 180.0;
 
 // object[key], or null when object is not an object or has no such key
 // (result.json files come from anywhere: no lookup may throw).

@@ -118,8 +118,7 @@ int RunCell(const Command& command) {
   std::vector<CellTruthAsset> truth;
   if (!FLAGS_truth.empty())
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));
-  const double load_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double load_seconds = SecondsSince(start);
 
   options.removal.distance = FLAGS_background_distance_mm * 1e-3;
   CellResult cell;
@@ -252,7 +251,7 @@ int RunCell(const Command& command) {
   out["timing_s"] = {
       {"load", load_seconds},
       {"fit", cell.seconds},
-      {"total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+      {"total", SecondsSince(start)}};
   const Status status = WriteStringAtomically(FLAGS_out, out.dump(2) + "\n");
   if (!status.ok()) return fail(status);
   std::printf("background: %zu of %zu points kept; cell %s\n", cell.background_points, cell.points,

@@ -43,6 +43,11 @@ void PrintCommandHelp(const Command& command);
 // `edgefit help`.
 void PrintOverview();
 
+// Seconds from `start` to now (steady clock).
+inline double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // A progress line on stderr for long steps, only when stderr is a terminal
 // (so scripts and logs get exactly one line on failure) or --progress=always,
 // never with --quiet; each line starts with the seconds since the command

@@ -38,10 +38,6 @@ DEFINE_int32(tau_min, 300, "Sec. 4.3: regions with fewer points are noise.");
 namespace edgefit::tools {
 namespace {
 
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 EdgeDetectionOptions OptionsFromFlags() {
   EdgeDetectionOptions o;
   o.normal_radius = FLAGS_normal_radius_mm * 1e-3;

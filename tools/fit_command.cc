@@ -179,8 +179,7 @@ int RunFit(const Command& command) {
   std::vector<CellTruthAsset> truth;  // one asset, or a cell's (edgefit scan --scene)
   if (!FLAGS_truth.empty())
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));
-  const double load_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double load_seconds = SecondsSince(start);
 
   ScanSet in_roi;
   if (has_roi) {
@@ -250,8 +249,7 @@ int RunFit(const Command& command) {
   if (!FLAGS_out_report.empty()) {  // before the background takes the model's points away
     Progress("report: the scan against the fitted model");
     json shown = result;
-    shown["timing_s"]["total"] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    shown["timing_s"]["total"] = SecondsSince(start);
     std::vector<Pose> corrections;  // the stations as the fit registered them
     for (const StationCorrection& c : fit.stations.stations) corrections.push_back(c.correction);
     FitReportOptions report_options;
@@ -280,8 +278,7 @@ int RunFit(const Command& command) {
     std::printf("background: removed %zu of %zu points within %.1f mm of the fitted model\n",
                 removed, before, FLAGS_background_distance_mm);
   }
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total = SecondsSince(start);
   result["timing_s"]["total"] = total;
   const Status status = WriteStringAtomically(FLAGS_out, result.dump(2) + "\n");
   if (!status.ok()) return fail(status);

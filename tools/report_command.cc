@@ -89,7 +89,7 @@ Status ReadFit(const json& result, const std::string& path, KinematicModel* mode
 
 // The bench's tables and plots from its saved runs: one file, or the
 // shards' files of a bench run as a Slurm array, their runs joined.
-int RunBench(const Command& command) {
+int RunBenchReport(const Command& command) {
   json runs = json::array();
   for (const std::string& path : SplitList(FLAGS_bench)) {
     std::string text;
@@ -112,13 +112,13 @@ int RunBench(const Command& command) {
   return 0;
 }
 
-int Run(const Command& command) {
+int RunReport(const Command& command) {
   if (FLAGS_result.empty() == FLAGS_bench.empty()) {
     return BadInput(command, "give one of --result (a fit) and --bench (a bench's runs)");
   }
   if (FLAGS_out.empty()) return BadInput(command, "--out is required");
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out}));
-  if (!FLAGS_bench.empty()) return RunBench(command);
+  if (!FLAGS_bench.empty()) return RunBenchReport(command);
   FitReportOptions options;
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckFitReportScripts(options));
   std::string text;
@@ -168,7 +168,7 @@ Command ReportCommand() {
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
           "  edgefit report --result=result.json --out=report.html",
           {"result", "bench", "out"},
-          Run};
+          RunReport};
 }
 
 }  // namespace edgefit::tools

@@ -165,10 +165,6 @@ Status WriteOutputs(const std::function<Status()>& write_truth, const VirtualSca
   return Status::Ok();
 }
 
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // The scan options of the flags; scanners placed around `box` (every asset).
 Status ScanOptionsFromFlags(const Eigen::AlignedBox3d& box, AssetScanOptions* options) {
   options->accessories = FLAGS_accessories;

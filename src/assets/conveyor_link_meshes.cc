@@ -29,7 +29,7 @@ TriangleMesh Arm(double tip_height) {
   return m;
 }
 
-TriangleMesh BaseLink() {
+TriangleMesh ConveyorBaseLink() {
   const ConveyorLayout& L = ConveyorLayoutValues();
   TriangleMesh m;
   for (double side : {-1.0, 1.0}) {
@@ -128,7 +128,7 @@ TriangleMesh Clamp() {
 }  // namespace
 
 std::vector<LinkMesh> ConveyorLinkMeshes() {
-  return {{"base_link", BaseLink()},      {"carriage_1", Carriage()},
+  return {{"base_link", ConveyorBaseLink()},      {"carriage_1", Carriage()},
           {"lifter_1", Lifter(true)},     {"carriage_2", Carriage()},
           {"lifter_2", Lifter(false)},    {"clamp_2_left", Clamp()},
           {"clamp_2_right", Clamp()}};

@@ -12,13 +12,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/core/format.h"
 
 namespace edgefit::bench_run {
 
 using nlohmann::json;
 
-constexpr double kDeg = M_PI / 180.0;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A number of a run; null (how JSON writes NaN) reads as NaN.

@@ -18,7 +18,6 @@ namespace edgefit {
 namespace {
 
 using bench_run::IsPrismatic;
-using bench_run::kDeg;
 using bench_run::kNaN;
 using bench_run::Number;
 using bench_run::PoolErrors;

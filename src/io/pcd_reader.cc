@@ -13,6 +13,7 @@
 namespace edgefit {
 namespace {
 
+using io_internal::AtLine;
 using io_internal::LineCursor;
 using io_internal::ScalarType;
 
@@ -34,10 +35,6 @@ struct PcdHeader {
   int record_bytes = 0, tokens = 0;
 };
 
-std::string At(const std::string& name, int64_t line) {
-  return name + ": line " + std::to_string(line) + ": ";
-}
-
 bool ToInt(std::string_view s, int64_t* v) {
   const char* p = s.data();
   return io_internal::ParseInt(&p, s.data() + s.size(), v) && p == s.data() + s.size();
@@ -52,7 +49,7 @@ Status ParseHeader(const std::string& name, LineCursor* cursor, PcdHeader* h) {
     const auto tokens = io_internal::SplitTokens(b, e);
     if (tokens.empty() || tokens[0][0] == '#') continue;
     const std::string key(tokens[0]);
-    const std::string where = At(name, cursor->line());
+    const std::string where = AtLine(name, cursor->line());
     auto ints = [&](std::vector<int64_t>* out) {
       for (size_t i = 1; i < tokens.size(); ++i) {
         int64_t v;
@@ -95,7 +92,7 @@ Status ParseHeader(const std::string& name, LineCursor* cursor, PcdHeader* h) {
       return Status::Error(where + "unknown PCD header key '" + key + "'");
     }
   }
-  const std::string where = At(name, cursor->line());
+  const std::string where = AtLine(name, cursor->line());
   const size_t n = h->fields.size();
   if (n == 0) return Status::Error(where + "no FIELDS before DATA");
   if (sizes.size() != n || types.size() != n || (!counts.empty() && counts.size() != n)) {
@@ -191,7 +188,7 @@ Status ParsePcd(std::string_view content, const std::string& name, const ReadOpt
   const char* data = cursor.position();
   for (int64_t f = 0; f < n; ++f) {
     auto where = [&]() {
-      return binary ? name + ": point " + std::to_string(f + 1) + ": " : At(name, cursor.line());
+      return binary ? name + ": point " + std::to_string(f + 1) + ": " : AtLine(name, cursor.line());
     };
     if (binary) {
       const char* record = data + f * h.record_bytes;
@@ -202,7 +199,7 @@ Status ParsePcd(std::string_view content, const std::string& name, const ReadOpt
     } else {
       const char *b, *e;
       if (!cursor.Next(&b, &e)) {
-        return Status::Error(At(name, cursor.line() + 1) + "file ends after " + std::to_string(f) +
+        return Status::Error(AtLine(name, cursor.line() + 1) + "file ends after " + std::to_string(f) +
                              " of " + std::to_string(n) + " points (truncated?)");
       }
       const char* p = b;

@@ -7,21 +7,12 @@
 #include "binary_field.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/pcd.h"
+#include "number_text.h"
 
 namespace edgefit {
 namespace {
 
-template <typename T>
-void AppendNumber(T value, std::string* out) {
-  if constexpr (std::is_floating_point_v<T>) {
-    if (std::isnan(value)) {
-      *out += "nan";
-      return;
-    }
-  }
-  char buf[32];
-  out->append(buf, std::to_chars(buf, buf + sizeof(buf), value).ptr);
-}
+using io_internal::AppendNumber;
 
 uint32_t Pack(const std::array<uint8_t, 3>& rgb) {
   return (static_cast<uint32_t>(rgb[0]) << 16) | (static_cast<uint32_t>(rgb[1]) << 8) | rgb[2];

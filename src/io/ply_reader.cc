@@ -14,6 +14,7 @@
 namespace edgefit {
 namespace {
 
+using io_internal::AtLine;
 using io_internal::LineCursor;
 using io_internal::ScalarType;
 
@@ -32,10 +33,6 @@ struct PlyElement {
   bool has_list = false;
 };
 
-std::string At(const std::string& name, int64_t line) {
-  return name + ": line " + std::to_string(line) + ": ";
-}
-
 std::string Lower(std::string_view s) {
   std::string out(s);
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -51,7 +48,7 @@ Status ParseHeader(const std::string& name, LineCursor* cursor, std::string* for
   while (true) {
     if (!cursor->Next(&b, &e)) return Status::Error(name + ": header has no end_header (truncated?)");
     const auto t = io_internal::SplitTokens(b, e);
-    const std::string where = At(name, cursor->line());
+    const std::string where = AtLine(name, cursor->line());
     if (t.empty() || t[0] == "comment" || t[0] == "obj_info") continue;
     if (t[0] == "end_header") break;
     if (t[0] == "format") {
@@ -157,18 +154,18 @@ Status ParsePly(std::string_view content, const std::string& name, const ReadOpt
     if (ascii) {
       const char *b, *e;
       if (!cursor.Next(&b, &e)) {
-        return Status::Error(At(name, cursor.line() + 1) + "file ends after " + std::to_string(k) + " of " +
+        return Status::Error(AtLine(name, cursor.line() + 1) + "file ends after " + std::to_string(k) + " of " +
                              std::to_string(n) + " vertices (truncated?)");
       }
       const char* p = b;
       for (double& value : values) {
         if (!io_internal::ParseReal(&p, e, &value)) {
-          return Status::Error(At(name, cursor.line()) + "expected " + std::to_string(np) + " numbers, got '" +
+          return Status::Error(AtLine(name, cursor.line()) + "expected " + std::to_string(np) + " numbers, got '" +
                                io_internal::Excerpt(b, e) + "'");
         }
       }
       if (!io_internal::OnlyBlanks(p, e)) {
-        return Status::Error(At(name, cursor.line()) + "more than " + std::to_string(np) + " numbers on a vertex line");
+        return Status::Error(AtLine(name, cursor.line()) + "more than " + std::to_string(np) + " numbers on a vertex line");
       }
     } else {
       const char* record = data + k * vertex.record_bytes;

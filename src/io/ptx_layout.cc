@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include "edgefit/core/median.h"
+
 namespace edgefit {
 namespace {
 
@@ -13,12 +15,6 @@ constexpr size_t kMaxSamples = 20000;
 
 bool Usable(const OrganizedScan& scan, size_t f) {
   return scan.IsValid(f) && scan.point_scanner(f).squaredNorm() > 0.0f;
-}
-
-double Median(std::vector<double>* v) {
-  const size_t mid = v->size() / 2;
-  std::nth_element(v->begin(), v->begin() + static_cast<std::ptrdiff_t>(mid), v->end());
-  return (*v)[mid];
 }
 
 double Angle(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
@@ -35,7 +31,7 @@ double MedianAngleAtOffset(const OrganizedScan& scan, size_t m) {
   for (size_t f = 0; f + m < n; f += stride) {
     if (Usable(scan, f) && Usable(scan, f + m)) angles.push_back(Angle(scan.point_scanner(f), scan.point_scanner(f + m)));
   }
-  return angles.empty() ? -1.0 : Median(&angles);
+  return angles.empty() ? -1.0 : MedianInPlace(&angles);
 }
 
 }  // namespace
@@ -72,7 +68,8 @@ PtxLayout DetectPtxLayout(const OrganizedScan& scan, int header_first, int heade
     d_azimuth.push_back(std::abs(da) * std::cos(0.5 * (ea + eb)));
   }
   if (d_elevation.empty()) return standard;
-  const bool fast_is_elevation = inner == 1 ? false : Median(&d_elevation) >= Median(&d_azimuth);
+  const bool fast_is_elevation =
+      inner == 1 ? false : MedianInPlace(&d_elevation) >= MedianInPlace(&d_azimuth);
   PtxLayout layout;
   if (fast_is_elevation) {
     layout.rows = static_cast<int>(inner);

@@ -14,6 +14,7 @@
 namespace edgefit {
 namespace {
 
+using io_internal::AtLine;
 using io_internal::Excerpt;
 using io_internal::LineCursor;
 using io_internal::OnlyBlanks;
@@ -27,26 +28,22 @@ constexpr int64_t kLinesPerBlock = 16384;
 // of a given size can hold, so a corrupt header cannot trigger a huge allocation.
 constexpr int64_t kMinPointLineBytes = 8;
 
-std::string At(const std::string& name, int64_t line) {
-  return name + ": line " + std::to_string(line) + ": ";
-}
-
 // One header line of `count` finite numbers.
 Status ParseHeaderNumbers(const std::string& name, const char* what, int count, LineCursor* cursor,
                           double* values) {
   const char *b, *e;
   if (!cursor->Next(&b, &e)) {
-    return Status::Error(At(name, cursor->line() + 1) + "file ends inside a scan header (expected " +
+    return Status::Error(AtLine(name, cursor->line() + 1) + "file ends inside a scan header (expected " +
                          what + ")");
   }
   const char* p = b;
   for (int i = 0; i <= count; ++i) {
     if (i == count ? !OnlyBlanks(p, e) : !ParseReal(&p, e, &values[i])) {
-      return Status::Error(At(name, cursor->line()) + "expected " + std::to_string(count) +
+      return Status::Error(AtLine(name, cursor->line()) + "expected " + std::to_string(count) +
                            " numbers (" + what + "), got '" + Excerpt(b, e) + "'");
     }
     if (i < count && !std::isfinite(values[i])) {
-      return Status::Error(At(name, cursor->line()) + "non-finite number in the " + what);
+      return Status::Error(AtLine(name, cursor->line()) + "non-finite number in the " + what);
     }
   }
   return Status::Ok();
@@ -55,13 +52,13 @@ Status ParseHeaderNumbers(const std::string& name, const char* what, int count, 
 Status ParseHeaderSize(const std::string& name, const char* what, LineCursor* cursor, int* size) {
   const char *b, *e;
   if (!cursor->Next(&b, &e)) {
-    return Status::Error(At(name, cursor->line() + 1) + "file ends inside a scan header (expected " +
+    return Status::Error(AtLine(name, cursor->line() + 1) + "file ends inside a scan header (expected " +
                          what + ")");
   }
   const char* p = b;
   int64_t value = 0;
   if (!ParseInt(&p, e, &value) || !OnlyBlanks(p, e) || value <= 0 || value > INT_MAX) {
-    return Status::Error(At(name, cursor->line()) + "expected a positive integer (" + what +
+    return Status::Error(AtLine(name, cursor->line()) + "expected a positive integer (" + what +
                          "), got '" + Excerpt(b, e) + "'");
   }
   *size = static_cast<int>(value);
@@ -80,12 +77,12 @@ Status ParseMatrix(const std::string& name, LineCursor* cursor, Pose* T_world_sc
   const int64_t last = cursor->line();
   if (std::abs(M(0, 3)) > 1e-6 || std::abs(M(1, 3)) > 1e-6 || std::abs(M(2, 3)) > 1e-6 ||
       std::abs(M(3, 3) - 1.0) > 1e-6) {
-    return Status::Error(At(name, last) + "the 4x4 matrix must end in columns 0 0 0 1 "
+    return Status::Error(AtLine(name, last) + "the 4x4 matrix must end in columns 0 0 0 1 "
                          "(row-vector convention, translation on the last line)");
   }
   const Eigen::Matrix3d R = M.topLeftCorner<3, 3>().transpose();
   if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-4 || R.determinant() < 0.0) {
-    return Status::Error(At(name, last) + "the 4x4 matrix is not a rigid transform");
+    return Status::Error(AtLine(name, last) + "the 4x4 matrix is not a rigid transform");
   }
   T_world_scanner->setIdentity();
   T_world_scanner->linear() = R;
@@ -147,7 +144,7 @@ Status ParsePoints(const std::string& name, int scan_number, LineCursor* cursor,
   block_starts.reserve(static_cast<size_t>(n / kLinesPerBlock + 1));
   for (int64_t k = 0; k < n; ++k) {
     if (p >= end) {
-      return Status::Error(At(name, first_line + k) + "scan " + std::to_string(scan_number) +
+      return Status::Error(AtLine(name, first_line + k) + "scan " + std::to_string(scan_number) +
                            " ends after " + std::to_string(k) + " of " + std::to_string(n) +
                            " points (file truncated?)");
     }
@@ -163,7 +160,7 @@ Status ParsePoints(const std::string& name, int scan_number, LineCursor* cursor,
   size_t tokens = 3;
   while (tokens == 3 && lines.Next(&b, &e)) tokens = io_internal::SplitTokens(b, e).size();
   if (tokens != 4 && tokens != 7 && tokens != 3) {
-    return Status::Error(At(name, lines.line()) + "expected 4 (x y z intensity) or 7 (x y z intensity r g b) "
+    return Status::Error(AtLine(name, lines.line()) + "expected 4 (x y z intensity) or 7 (x y z intensity r g b) "
                          "numbers on a point line, got " + std::to_string(tokens));
   }
   const bool color = tokens == 7;
@@ -186,7 +183,7 @@ Status ParsePoints(const std::string& name, int scan_number, LineCursor* cursor,
     }
   }
   for (const LineError& error : errors) {  // the first bad line wins
-    if (error.line >= 0) return Status::Error(At(name, error.line) + error.message);
+    if (error.line >= 0) return Status::Error(AtLine(name, error.line) + error.message);
   }
   *cursor = LineCursor(data_end, end, first_line + n);
   return Status::Ok();
@@ -214,12 +211,12 @@ Status ParsePtx(std::string_view content, const std::string& name, const ReadOpt
     for (const char* axis : {"scanner X axis", "scanner Y axis", "scanner Z axis"}) {
       EDGEFIT_RETURN_IF_ERROR(ParseHeaderNumbers(name, axis, 3, &cursor, ignored));
     }
-    Pose T_world_scanner;
+    Pose T_world_scanner = Pose::Identity();
     EDGEFIT_RETURN_IF_ERROR(ParseMatrix(name, &cursor, &T_world_scanner));
     const int64_t n = static_cast<int64_t>(first) * second;
     const int64_t left = cursor.end() - cursor.position();
     if (n > (left + 1) / kMinPointLineBytes) {
-      return Status::Error(At(name, cursor.line() - 9) + "scan " + std::to_string(scan_number) +
+      return Status::Error(AtLine(name, cursor.line() - 9) + "scan " + std::to_string(scan_number) +
                            " header promises " + std::to_string(first) + " x " + std::to_string(second) +
                            " points but only " + std::to_string(left) + " bytes follow (file truncated?)");
     }

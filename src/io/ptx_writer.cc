@@ -1,20 +1,14 @@
-#include <charconv>
 #include <ostream>
 #include <string>
 
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/ptx.h"
+#include "number_text.h"
 
 namespace edgefit {
 namespace {
 
-// Appends the shortest text that parses back to exactly `value`.
-template <typename T>
-void AppendNumber(T value, std::string* out) {
-  char buf[32];
-  const auto result = std::to_chars(buf, buf + sizeof(buf), value);
-  out->append(buf, result.ptr);
-}
+using io_internal::AppendNumber;
 
 void AppendRow(std::initializer_list<double> values, std::string* out) {
   bool first = true;

@@ -16,6 +16,11 @@
 namespace edgefit {
 namespace io_internal {
 
+// The prefix of an error on a line of a file: "<name>: line <line>: ".
+inline std::string AtLine(const std::string& name, int64_t line) {
+  return name + ": line " + std::to_string(line) + ": ";
+}
+
 inline bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 inline const char* SkipBlanks(const char* p, const char* end) {

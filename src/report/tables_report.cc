@@ -8,7 +8,7 @@
 namespace edgefit {
 namespace {
 
-constexpr char kStyle[] = R"css(
+constexpr char kTablesStyle[] = R"css(
 body { font: 14px/1.4 sans-serif; margin: 0 16px 24px; color: #222; }
 h1 { font-size: 18px; margin: 12px 0 4px; }
 h2 { font-size: 15px; margin: 22px 0 6px; }
@@ -23,7 +23,7 @@ td:first-child, th:first-child { text-align: left; }
 #status { font-size: 11px; color: #888; margin-top: 16px; }
 )css";
 
-constexpr char kScript[] = R"js(
+constexpr char kTablesScript[] = R"js(
 'use strict';
 const status = document.getElementById('status');
 window.addEventListener('error', e => { status.textContent = 'error: ' + e.message; });
@@ -38,7 +38,7 @@ window.addEventListener('load', () => {
 
 std::string TablesReportPage(const TablesReport& report) {
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" +
-                     EscapeHtml(report.title) + "</title>\n<style>" + kStyle +
+                     EscapeHtml(report.title) + "</title>\n<style>" + kTablesStyle +
                      "</style></head>\n<body>\n<h1>" + EscapeHtml(report.title) + "</h1>\n";
   for (const std::string& line : report.lines) page += "<p>" + EscapeHtml(line) + "</p>\n";
   if (!report.charts.empty()) {
@@ -47,7 +47,7 @@ std::string TablesReportPage(const TablesReport& report) {
     page += "</div>\n";
   }
   for (const Table& table : report.tables) page += HtmlTable(table);
-  page += "<div id=\"status\">loading</div>\n<script>" + EscapeScript(kScript) +
+  page += "<div id=\"status\">loading</div>\n<script>" + EscapeScript(kTablesScript) +
           "</script>\n</body></html>\n";
   return page;
 }

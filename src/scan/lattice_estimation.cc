@@ -7,17 +7,11 @@
 #include <cmath>
 #include <vector>
 
+#include "edgefit/core/angles.h"
+#include "edgefit/core/median.h"
+
 namespace edgefit {
 namespace {
-
-constexpr double kTwoPi = 2.0 * M_PI;
-
-double Median(std::vector<double>* v) {
-  CHECK(!v->empty());
-  const size_t mid = v->size() / 2;
-  std::nth_element(v->begin(), v->begin() + static_cast<std::ptrdiff_t>(mid), v->end());
-  return (*v)[mid];
-}
 
 // Rotation axis of the scanner head in the scanner frame (header comment, 1).
 // Returns false when the columns cannot observe it.
@@ -66,7 +60,7 @@ bool EstimateAxis(const OrganizedScan& scan, const LatticeOptions& options,
     for (const auto& n : normals) {
       if (!n.isZero()) residuals.push_back(std::abs(n.dot(*axis)));
     }
-    const double limit = 3.0 * Median(&residuals) + 1e-9;
+    const double limit = 3.0 * MedianInPlace(&residuals) + 1e-9;
     for (size_t c = 0; c < normals.size(); ++c) {
       weights[c] = normals[c].isZero() || std::abs(normals[c].dot(*axis)) <= limit ? 1.0 : 0.0;
     }
@@ -101,7 +95,7 @@ Status FillLine(const char* what, bool wrap, const std::vector<char>& known,
       steps.push_back(diff((*angles)[idx[k - 1]], (*angles)[idx[k]]) / (idx[k] - idx[k - 1]));
     }
   }
-  const double step = Median(&steps);
+  const double step = MedianInPlace(&steps);
   if (step == 0.0) return Status::Error(std::string("zero angular step between ") + what);
   auto& a = *angles;
   for (size_t k = 1; k < idx.size(); ++k) {
@@ -121,7 +115,7 @@ Status FillLine(const char* what, bool wrap, const std::vector<char>& known,
   if (!monotonic) {
     std::vector<double> offsets;
     for (int i : idx) offsets.push_back(a[i] - step * i);
-    const double a0 = Median(&offsets);
+    const double a0 = MedianInPlace(&offsets);
     LOG(WARNING) << "lattice " << what << " not monotonic; using a linear lattice";
     for (int i = 0; i < n; ++i) a[i] = a0 + step * i;
   }
@@ -193,7 +187,7 @@ Status EstimateLattice(const OrganizedScan& scan, const LatticeOptions& options,
     // Circular median: angles relative to the first one, in (-pi, pi].
     const double ref = azimuths.front();
     for (double& a : azimuths) a = std::remainder(a - ref, kTwoPi);
-    col_azimuths[static_cast<size_t>(c)] = ref + Median(&azimuths);
+    col_azimuths[static_cast<size_t>(c)] = ref + MedianInPlace(&azimuths);
     col_known[static_cast<size_t>(c)] = 1;
   }
   std::vector<double> row_elevations(static_cast<size_t>(rows), 0.0);
@@ -206,7 +200,7 @@ Status EstimateLattice(const OrganizedScan& scan, const LatticeOptions& options,
       if (!std::isnan(e)) values.push_back(e);
     }
     if (static_cast<int>(values.size()) < options.min_points_per_line) continue;
-    row_elevations[static_cast<size_t>(r)] = Median(&values);
+    row_elevations[static_cast<size_t>(r)] = MedianInPlace(&values);
     row_known[static_cast<size_t>(r)] = 1;
   }
   EDGEFIT_RETURN_IF_ERROR(FillLine("rows", false, row_known, &row_elevations));

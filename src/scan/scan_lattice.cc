@@ -7,10 +7,10 @@
 #include <string>
 #include <utility>
 
+#include "edgefit/core/angles.h"
+
 namespace edgefit {
 namespace {
-
-constexpr double kTwoPi = 2.0 * M_PI;
 
 // atan2(y, x) within 2e-13 rad, several times faster than libm's (every
 // projection of every sample into every scan takes two): the octant

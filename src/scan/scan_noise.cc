@@ -5,16 +5,12 @@
 #include <cmath>
 #include <limits>
 
+#include "edgefit/core/median.h"
+
 namespace edgefit {
 namespace {
 
 constexpr double kMadToSigma = 1.4826;
-
-double Median(std::vector<double>* v) {
-  const size_t mid = v->size() / 2;
-  std::nth_element(v->begin(), v->begin() + static_cast<std::ptrdiff_t>(mid), v->end());
-  return (*v)[mid];
-}
 
 // The distance of cell (r, c) to the plane through its window's other valid
 // cells [m]; NaN with fewer than min_neighbours of them.
@@ -97,11 +93,11 @@ ScanNoise EstimateScanNoise(const ScanSet& scans, const ScanNoiseOptions& option
   }
   noise.measured = all.size();
   if (all.empty()) return noise;
-  noise.median_sigma = kMadToSigma * Median(&all);
+  noise.median_sigma = kMadToSigma * MedianInPlace(&all);
   noise.sigma.assign(per_bin.size(), std::numeric_limits<double>::quiet_NaN());
   for (size_t b = 0; b < per_bin.size(); ++b) {
     if (static_cast<int>(per_bin[b].size()) >= options.min_per_bin) {
-      noise.sigma[b] = kMadToSigma * Median(&per_bin[b]);
+      noise.sigma[b] = kMadToSigma * MedianInPlace(&per_bin[b]);
     }
   }
   return noise;

@@ -12,13 +12,11 @@
 namespace edgefit {
 namespace {
 
-using Json = nlohmann::json;
-
-std::string StringField(const Json& a, const char* key) {
+std::string StringField(const nlohmann::json& a, const char* key) {
   return a.contains(key) && a[key].is_string() ? a[key].get<std::string>() : "";
 }
 
-Status LoadAsset(const Json& a, const std::string& file, const std::string& where, uint64_t seed,
+Status LoadAsset(const nlohmann::json& a, const std::string& file, const std::string& where, uint64_t seed,
                  CellSceneAsset* asset) {
   auto fail = [&where](const std::string& what) { return Status::Error(where + ": " + what); };
   if (!a.is_object()) return fail("not a JSON object");
@@ -64,14 +62,14 @@ Status LoadAsset(const Json& a, const std::string& file, const std::string& wher
 Status LoadCellScene(const std::string& path, uint64_t seed, std::vector<CellSceneAsset>* assets) {
   std::string text;
   EDGEFIT_RETURN_IF_ERROR(ReadFileToString(path, &text));
-  const Json j = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object()) return Status::Error(path + ": not a JSON object");
   if (!j.contains("assets") || !j["assets"].is_array() || j["assets"].empty()) {
     return Status::Error(path + ": no \"assets\" array");
   }
   std::vector<CellSceneAsset> loaded(j["assets"].size());
   for (size_t a = 0; a < loaded.size(); ++a) {
-    const Json& item = j["assets"][a];
+    const nlohmann::json& item = j["assets"][a];
     loaded[a].name = item.is_object() ? StringField(item, "name") : "";
     if (loaded[a].name.empty()) loaded[a].name = "asset_" + std::to_string(a + 1);
     const std::string where = path + ": asset '" + loaded[a].name + "'";

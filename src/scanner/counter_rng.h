@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/core/split_mix64.h"
 
 namespace edgefit {
@@ -30,7 +31,6 @@ inline double UnitOpen(uint64_t bits) {
 
 // A standard normal draw from two hashes (Box-Muller, cosine branch).
 inline double StandardNormal(uint64_t bits_a, uint64_t bits_b) {
-  constexpr double kTwoPi = 6.283185307179586476925286766559;
   return std::sqrt(-2.0 * std::log(UnitOpen(bits_a))) * std::cos(kTwoPi * UnitOpen(bits_b));
 }
 

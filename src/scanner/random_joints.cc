@@ -3,12 +3,12 @@
 #include <cmath>
 
 #include "counter_rng.h"
+#include "edgefit/core/angles.h"
 
 namespace edgefit {
 
 std::vector<double> RandomJointValues(const KinematicModel& model, uint64_t seed) {
   constexpr int kMaxDraws = 64;
-  constexpr double kPi = 3.14159265358979323846;
   SplitMix64 rng(seed);
   const std::vector<int> independent = model.IndependentJoints();
   std::vector<double> q;

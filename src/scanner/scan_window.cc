@@ -4,16 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/scanner/virtual_scanner.h"
 
 namespace edgefit {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-
-}  // namespace
-
 bool VirtualScanOptions::IsValid(std::string* error) const {
   auto fail = [error](const char* message) {
     if (error != nullptr) *error = message;

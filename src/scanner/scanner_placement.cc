@@ -6,11 +6,10 @@
 #include <cmath>
 
 #include "counter_rng.h"
+#include "edgefit/core/angles.h"
 
 namespace edgefit {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Euclidean distance of the floor point (x, y), relative to the box centre,
 // from the box's footprint (an axis-aligned rectangle of half sizes hx, hy).

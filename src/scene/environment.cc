@@ -6,15 +6,13 @@
 #include <cmath>
 #include <vector>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/core/pose.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "edgefit/core/split_mix64.h"
 
 namespace edgefit {
 namespace {
-
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Appends a box of full edge lengths `size` whose centre is `center` in the
 // object frame.

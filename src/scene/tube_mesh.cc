@@ -5,10 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgefit/core/angles.h"
+
 namespace edgefit {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinGap = 1e-9;  // [m] points closer than this are merged
 
 std::vector<Eigen::Vector3d> Distinct(const std::vector<Eigen::Vector3d>& points) {

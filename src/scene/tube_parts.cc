@@ -7,13 +7,13 @@
 #include <cmath>
 
 #include "accessory_parts.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/scene/tube_mesh.h"
 
 namespace edgefit {
 namespace scene_internal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kCurveStep = 0.02;  // [m] centre-line resolution
 
 // The segment a cable follows along a link [m, world]: from the joint into

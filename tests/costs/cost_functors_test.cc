@@ -23,12 +23,12 @@
 #include "costs/point_to_point_cost.h"
 #include "costs/prismatic_point_cost.h"
 #include "costs/revolute_point_cost.h"
+#include "edgefit/core/angles.h"
 
 namespace edgefit {
 namespace {
 
 using Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 
 Vector3d RandomVector(std::mt19937& rng, double range) {
   std::uniform_real_distribution<double> u(-range, range);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/scan/organized_scan.h"
 #include "scan/synthetic_scan.h"
 
@@ -22,7 +23,6 @@ inline std::string TempPath(const std::string& name) {
 // A small organized scan of the reader tests: 36 x 64 cells, 1 mm noise, 10%
 // missing, a tilted scanner pose.
 inline SyntheticScanOptions SmallScanOptions(uint32_t seed, bool color = false) {
-  constexpr double kDeg = M_PI / 180.0;
   SyntheticScanOptions o;
   o.rows = 36;
   o.cols = 64;

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
 #include "io/io_test_util.h"
@@ -22,8 +23,6 @@ using testing::ExpectSameScan;
 using testing::MakeSyntheticScan;
 using testing::SyntheticScanOptions;
 using testing::TempPath;
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(PtxTest, RoundTripTwoScansWithColour) {
   ScanSet original;

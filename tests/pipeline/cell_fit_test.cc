@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/pipeline/asset_kind.h"
 #include "edgefit/scanner/asset_scan.h"
@@ -20,8 +21,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(CellFitTest, FindsBothRobotsAndLeavesTheOtherMachine) {
   KinematicModel robot, balancer;

@@ -15,6 +15,7 @@
 
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
@@ -26,8 +27,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct ConveyorScene {
   KinematicModel model;

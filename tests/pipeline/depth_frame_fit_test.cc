@@ -13,6 +13,7 @@
 #include <cstdio>
 
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/pipeline/fit.h"
 #include "edgefit/scanner/asset_scan.h"
@@ -20,8 +21,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(DepthFrameFitTest, TheRobotSeenByADepthCamera) {
   KinematicModel model;

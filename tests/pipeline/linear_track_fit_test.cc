@@ -15,6 +15,7 @@
 
 #include "edgefit/bench/bench_case.h"
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/pipeline/asset_kind.h"
@@ -25,8 +26,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(LinearTrackFitTest, TheRailSlidesToItsPlace) {
   const std::string robots = std::string(EDGEFIT_SHARED_DIR) + "/robots/";

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
@@ -23,7 +24,6 @@
 namespace edgefit {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 using testing_util::GetRobotScene;
 using testing_util::RobotScene;
 

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/io/camera_info.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
@@ -25,8 +26,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct RealFrame {
   KinematicModel model;

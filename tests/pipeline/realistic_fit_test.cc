@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/surface_sampler.h"
 #include "edgefit/pipeline/fit.h"
@@ -25,8 +26,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct RealisticScene {
   KinematicModel model;

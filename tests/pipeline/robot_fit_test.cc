@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/pipeline/fit.h"
@@ -27,8 +28,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 using testing_util::RobotScene;
 const RobotScene& GetScene() { return testing_util::GetRobotScene(); }
@@ -211,7 +210,6 @@ TEST(RobotFitTest, BareFlangeIsUnobservableAndTheFitOk) {
     }
   }
 }
-
 
 }  // namespace
 }  // namespace edgefit

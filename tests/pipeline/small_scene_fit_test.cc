@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "edgefit/bench/fit_errors.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/pipeline/asset_kind.h"
@@ -33,8 +34,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 // Errors of `fit` against the truth (q, T_world_base) of `model`.
 FitErrors Score(const KinematicModel& model, const FitResult& fit, const std::vector<double>& q,

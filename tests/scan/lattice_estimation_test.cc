@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "edgefit/core/angles.h"
 #include "scan/synthetic_scan.h"
 
 namespace edgefit {
@@ -14,8 +15,6 @@ namespace {
 using testing::MakeSyntheticScan;
 using testing::RoomScene;
 using testing::SyntheticScanOptions;
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct LatticeCase {
   std::string name;

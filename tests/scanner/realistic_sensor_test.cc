@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "edgefit/scan/mixed_pixels.h"
@@ -20,8 +21,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 SceneMesh Box(const Eigen::AlignedBox3d& box, uint16_t label, double reflectance = 0.5) {
   SceneMesh m;

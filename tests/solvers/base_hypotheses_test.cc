@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/core/angles.h"
+
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 void Quiet(const std::string&) {}
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "solvers/base/floor_height.h"
 #include "solvers/icp_test_util.h"
@@ -23,8 +24,6 @@ namespace {
 using testing_util::RotationErrorRad;
 using testing_util::TranslationError;
 
-constexpr double kDeg = M_PI / 180.0;
-
 using testing_util::RoundBaseWithBox;
 
 const Pose kTrueBasePose = PoseFromXyzRpy({1.2, -0.4, 0.0}, {0, 0, 0.7});
@@ -34,7 +33,7 @@ struct BaseScene {
   double floor_z = 0.0;
 };
 
-const BaseScene& GetScene() {
+const BaseScene& GetBaseScene() {
   static BaseScene* scene = [] {
     auto* out = new BaseScene;
     VirtualScan scan = testing_util::ScanLinkOnFloor(RoundBaseWithBox(), kTrueBasePose, {}, 5);
@@ -47,7 +46,7 @@ const BaseScene& GetScene() {
 }
 
 void ExpectNearTruth(const BaseRoughOptions& options) {
-  const BaseScene& s = GetScene();
+  const BaseScene& s = GetBaseScene();
   BaseRoughResult result;
   const Status status = FitBaseRough(s.scans, s.floor_z, RoundBaseWithBox(), options, &result);
   ASSERT_TRUE(status.ok()) << status.message();

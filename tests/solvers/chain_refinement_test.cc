@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/model/joint_values.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/scanner/asset_scan.h"
@@ -25,7 +26,6 @@
 namespace edgefit {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 // How close the refinement brings every joint but the round flange's on the
 // 4 mm scan with 1 mm noise. joint_5 ends 0.03 deg off at the default
 // visibility tolerance (2 mm), 0.01 deg with the 5 mm gate as tolerance:
@@ -71,7 +71,7 @@ RobotScene* MakeScene(double noise_sigma, bool incidence_noise = false) {
   return out;
 }
 
-const RobotScene& GetScene() {
+const RobotScene& GetRobotScene() {
   static RobotScene* scene = MakeScene(0.001);
   return *scene;
 }
@@ -91,7 +91,7 @@ Status RefineOn(const RobotScene& s, const std::vector<SurfaceSamples>& samples,
 Status Refine(const std::vector<SurfaceSamples>& samples, const ChainRefinementOptions& options,
               Pose* T_world_base, std::vector<double>* q, ChainRefinementSummary* summary,
               const ResidualOptions& residuals = ResidualOptions()) {
-  return RefineOn(GetScene(), samples, options, T_world_base, q, summary, residuals);
+  return RefineOn(GetRobotScene(), samples, options, T_world_base, q, summary, residuals);
 }
 
 ChainRefinementOptions CovarianceOnly() {
@@ -103,7 +103,7 @@ ChainRefinementOptions CovarianceOnly() {
 // The truth moved as far as a sequential fit may leave it: base 3 mm and
 // 0.1 degrees, every joint 0.3 degrees.
 void PerturbedStart(Pose* T_world_base, std::vector<double>* q) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   *T_world_base = s.T_world_base * PoseFromXyzRpy({0.003, -0.002, 0.001}, {0, 0, 0.1 * kDeg});
   *q = s.q;
   double sign = 1.0;
@@ -114,7 +114,7 @@ void PerturbedStart(Pose* T_world_base, std::vector<double>* q) {
 }
 
 TEST(ChainKinematicsTest, DerivativesAreTheTwistsOfBaseAndJoints) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   const std::vector<int> independent = s.model.IndependentJoints();
   ASSERT_EQ(independent.size(), 6u);
   const double delta[6] = {0, 0, 0, 0, 0, 0};
@@ -144,7 +144,7 @@ TEST(ChainKinematicsTest, DerivativesAreTheTwistsOfBaseAndJoints) {
 }
 
 TEST(ChainRefinementTest, BringsBaseAndEveryJointBackTogether) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   Pose T_world_base;
   std::vector<double> q;
   PerturbedStart(&T_world_base, &q);
@@ -183,7 +183,7 @@ TEST(ChainRefinementTest, BringsBaseAndEveryJointBackTogether) {
 }
 
 TEST(ChainRefinementTest, ARobustLossTakesOneSamplePerBlockAndAgrees) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   Pose T_world_base;
   std::vector<double> q;
   PerturbedStart(&T_world_base, &q);
@@ -297,7 +297,7 @@ TEST(ChainRefinementTest, IncidenceWeightsLetGrazingReturnsPullLess) {
 }
 
 TEST(ChainRefinementTest, CovarianceAloneKeepsTheEstimate) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   Pose T_world_base = s.T_world_base;
   std::vector<double> q = s.q;
   ChainRefinementSummary summary;
@@ -313,7 +313,7 @@ TEST(ChainRefinementTest, CovarianceAloneKeepsTheEstimate) {
 // quadratic in sigma_cad, absent at 0, and not averaged away by more
 // samples, while the residuals' part falls with their number.
 TEST(ChainRefinementTest, TheCadDeviationIsNotAveragedAwayByMoreSamples) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   SamplingOptions dense;
   dense.spacing = 0.004;
   const std::vector<SurfaceSamples> dense_samples = SampleModelSurfaces(s.model, dense);
@@ -355,7 +355,7 @@ TEST(ChainRefinementTest, TheCadDeviationIsNotAveragedAwayByMoreSamples) {
 }
 
 TEST(ChainRefinementTest, AJointNoSamplePinsHasNoDeviation) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   std::vector<SurfaceSamples> samples = s.samples;
   for (const int l : {s.model.LinkIndex("link_6"), s.model.LinkIndex("tool0")}) {
     if (l >= 0) samples[static_cast<size_t>(l)] = SurfaceSamples();
@@ -379,7 +379,7 @@ TEST(ChainRefinementTest, AJointNoSamplePinsHasNoDeviation) {
 }
 
 TEST(ChainRefinementTest, RejectsSamplesThatDoNotMatchTheModel) {
-  const RobotScene& s = GetScene();
+  const RobotScene& s = GetRobotScene();
   Pose T_world_base = s.T_world_base;
   std::vector<double> q = s.q;
   ChainRefinementSummary summary;

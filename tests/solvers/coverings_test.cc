@@ -28,7 +28,7 @@ struct JacketScene {
   std::vector<SurfaceSamples> samples;
 };
 
-const JacketScene& GetScene() {
+const JacketScene& GetJacketScene() {
   static const JacketScene* scene = [] {
     auto* out = new JacketScene;
     testing_util::LoadBundledRobotWithGun(
@@ -49,7 +49,7 @@ const JacketScene& GetScene() {
 }
 
 TEST(CoveringsTest, FindsTheJacketsAtTheTruePose) {
-  const JacketScene& scene = GetScene();
+  const JacketScene& scene = GetJacketScene();
   const VirtualScan& scan = scene.scan;
   CorrespondenceSearch search(&scan.scans, nullptr);
   CellMask covered;
@@ -93,7 +93,7 @@ TEST(CoveringsTest, FindsTheJacketsAtTheTruePose) {
 // CAD over an area, as a jacket would (878 of its cells were taken for a
 // covering while sliding links could be covered).
 TEST(CoveringsTest, NeverCoversASlidingLink) {
-  const JacketScene& scene = GetScene();
+  const JacketScene& scene = GetJacketScene();
   std::vector<double> q = scene.q;
   const int electrode = scene.model.LinkIndex("gun_electrode");
   ASSERT_GE(electrode, 0);

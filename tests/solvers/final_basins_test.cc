@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/scanner/asset_scan.h"
 #include "model/bundled_robot_test_util.h"
@@ -22,8 +23,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct GunScene {
   KinematicModel model;
@@ -34,7 +33,7 @@ struct GunScene {
   std::vector<SurfaceSamples> icp_samples, sweep_samples;
 };
 
-const GunScene& GetScene() {
+const GunScene& GetGunScene() {
   static GunScene* scene = [] {
     auto* out = new GunScene;
     testing_util::LoadBundledRobotWithGun(
@@ -67,7 +66,7 @@ const GunScene& GetScene() {
 // *gain: ChainFitter::BranchGain of the pair.
 ChainFitter::ViewComparison CompareJaw(double q_gun, double q_other_gun, double hidden,
                                        double* gain) {
-  const GunScene& s = GetScene();
+  const GunScene& s = GetGunScene();
   ScanSet scans = s.scans;
   const size_t gun = static_cast<size_t>(s.model.JointIndex("gun_joint"));
   const int tcp = s.model.LinkIndex("tcp");
@@ -98,7 +97,7 @@ ChainFitter::ViewComparison CompareJaw(double q_gun, double q_other_gun, double 
 
 // CheckFinalBasins(take = true) from q on the scene: *moved, and q after.
 void CheckFrom(std::vector<double>* q, bool* moved) {
-  const GunScene& s = GetScene();
+  const GunScene& s = GetGunScene();
   CorrespondenceSearch search(&s.scans, nullptr);
   const ScanVisibility visibility(&s.scans);
   WeightedIcp icp(&s.scans, &search, &s.edges.normals);
@@ -119,21 +118,21 @@ void CheckFrom(std::vector<double>* q, bool* moved) {
 }
 
 double Error(const std::vector<double>& q, const std::string& joint) {
-  const GunScene& s = GetScene();
+  const GunScene& s = GetGunScene();
   const size_t j = static_cast<size_t>(s.model.JointIndex(joint));
   return std::abs(std::remainder(q[j] - s.q[j], 2.0 * M_PI));
 }
 
 TEST(FinalBasinsTest, FindNothingBetterAtTheTruth) {
-  std::vector<double> q = GetScene().q;
+  std::vector<double> q = GetGunScene().q;
   bool moved = true;
   CheckFrom(&q, &moved);
   EXPECT_FALSE(moved);
-  EXPECT_EQ(q, GetScene().q);
+  EXPECT_EQ(q, GetGunScene().q);
 }
 
 TEST(FinalBasinsTest, BringAFlippedWristBack) {
-  const GunScene& s = GetScene();
+  const GunScene& s = GetGunScene();
   std::vector<double> q = s.q;
   q[static_cast<size_t>(s.model.JointIndex("joint_4"))] += M_PI;
   q[static_cast<size_t>(s.model.JointIndex("joint_5"))] *= -1.0;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "correspondence/correspondence_test_util.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/correspondence/correspondence_search.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "edgefit/model/surface_sampler.h"
@@ -25,10 +26,9 @@
 namespace edgefit {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 constexpr double kTrueAngle = 0.7;  // [rad]
 
-LinkMotion Joint() {
+LinkMotion SweptJoint() {
   LinkMotion motion;
   motion.type = LinkMotion::Type::kRevolute;
   motion.T_world_joint = PoseFromXyzRpy({0.2, -0.1, 1.0}, {0, 0, 0.3});
@@ -44,20 +44,20 @@ struct SweepScene {
   SurfaceSamples samples;  // link frame, with normals
 };
 
-// The mesh on Joint() at kTrueAngle, scanned noise-free at 3 mm.
+// The mesh on SweptJoint() at kTrueAngle, scanned noise-free at 3 mm.
 SweepScene ScanLink(const TriangleMesh& mesh) {
   SweepScene out;
   VirtualScanOptions options;
   options.spacing = 0.003;
   options.noise_sigma = 0.0;
   VirtualScan scan =
-      testing_util::ScanLinkOnFloor(mesh, Joint().PoseAt(kTrueAngle), {}, 4, options);
+      testing_util::ScanLinkOnFloor(mesh, SweptJoint().PoseAt(kTrueAngle), {}, 4, options);
   out.scans = std::move(scan.scans);
   out.samples = SampleMeshSurface(mesh, 0.012, 5);
   return out;
 }
 
-JointSweepSummary Sweep(const SweepScene& scene, const LinkMotion& motion = Joint()) {
+JointSweepSummary Sweep(const SweepScene& scene, const LinkMotion& motion = SweptJoint()) {
   CorrespondenceSearch search(&scene.scans, nullptr);
   const ScanVisibility visibility(&scene.scans);
   const JointSweep sweep(&search.lattice(), &visibility);
@@ -102,7 +102,7 @@ TEST(JointSweepTest, SymmetricBoxHasARunnerUpHalfATurnAway) {
 // no runner-up.
 TEST(JointSweepTest, RangeOverATurnSweepsOneTurn) {
   const SweepScene scene = ScanLink(testing_util::LinkMesh());
-  LinkMotion motion = Joint();
+  LinkMotion motion = SweptJoint();
   motion.lower = -6.1;
   motion.upper = 6.1;
   const JointSweepSummary summary = Sweep(scene, motion);
@@ -124,8 +124,8 @@ TEST(JointSweepTest, PerSampleLossesMarkTheHiddenAndSumToTheTotal) {
   const JointSweepOptions options;
   for (const double q : {kTrueAngle, kTrueAngle + 0.5}) {
     std::vector<float> losses;
-    const double total = sweep.Loss(scene.samples, Joint(), q, options);
-    EXPECT_EQ(sweep.LossAt(scene.samples, Joint().PoseAt(q), options, &losses), total);
+    const double total = sweep.Loss(scene.samples, SweptJoint(), q, options);
+    EXPECT_EQ(sweep.LossAt(scene.samples, SweptJoint().PoseAt(q), options, &losses), total);
     ASSERT_EQ(losses.size(), scene.samples.size());
     double sum = 0.0;
     size_t hidden = 0;
@@ -161,7 +161,7 @@ TEST(ScanVisibilityTest, MissingCellsAreViewsOfNothing) {
     }
   }
   const ScanVisibility plain(&scene.scans), masked(&scene.scans, &mask), copy(&without);
-  const Pose T_world_link = Joint().PoseAt(kTrueAngle);
+  const Pose T_world_link = SweptJoint().PoseAt(kTrueAngle);
   size_t emptied = 0;
   for (size_t k = 0; k < scene.samples.points.size(); ++k) {
     const Eigen::Vector3d q = T_world_link * scene.samples.points[k].cast<double>();

@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kSpacing = 0.004;  // [m], the fit's ICP samples
 
-SurfaceSamples Samples(const TriangleMesh& mesh) { return SampleMeshSurface(mesh, kSpacing, 7); }
+SurfaceSamples MeshSamples(const TriangleMesh& mesh) { return SampleMeshSurface(mesh, kSpacing, 7); }
 
 double LargestOffShare(const SurfaceSamples& samples, const Eigen::Vector3d& axis) {
   const ObservabilityOptions options;
@@ -34,12 +34,12 @@ double LargestOffShare(const SurfaceSamples& samples, const Eigen::Vector3d& axi
 }
 
 TEST(ObservabilityTest, RoundFlangeStaysOnItsSurfaceTurnedAboutItsAxisOnly) {
-  const SurfaceSamples flange = Samples(MakeCylinderMesh(0.08, 0.10, 64));
+  const SurfaceSamples flange = MeshSamples(MakeCylinderMesh(0.08, 0.10, 64));
   EXPECT_LT(LargestOffShare(flange, Eigen::Vector3d::UnitZ()), 0.01);
   EXPECT_GT(LargestOffShare(flange, Eigen::Vector3d::UnitX()), 0.5);
   TriangleMesh with_tool = MakeCylinderMesh(0.08, 0.10, 64);
   with_tool.Append(MakeBoxMesh({0.20, 0.10, 0.10}), PoseFromXyzRpy({0.20, 0, 0.10}, {0, 0, 0}));
-  const double off = LargestOffShare(Samples(with_tool), Eigen::Vector3d::UnitZ());
+  const double off = LargestOffShare(MeshSamples(with_tool), Eigen::Vector3d::UnitZ());
   std::printf("  flange with a box beside it: %.2f of its samples off at most\n", off);
   EXPECT_GT(off, 0.5);
 }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/correspondence/correspondence_search.h"
 #include "edgefit/model/composition.h"
 #include "edgefit/model/surface_sampler.h"
@@ -21,8 +22,6 @@
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 // base, a round upper arm on `roll` (z), a forearm box on `bend` (y, or z
 // when `parallel`) at the arm's top.

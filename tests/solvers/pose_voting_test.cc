@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "solvers/icp_test_util.h"
 #include "solvers/link_scan_test_util.h"
@@ -19,10 +20,8 @@ namespace {
 using testing_util::RotationErrorRad;
 using testing_util::TranslationError;
 
-constexpr double kDeg = M_PI / 180.0;
-
 // An L-shaped body (a base with a shoulder on one side), frame at its foot.
-TriangleMesh Body() {
+TriangleMesh LShapedBody() {
   TriangleMesh mesh;
   mesh.Append(MakeCylinderMesh(0.12, 0.2, 64), PoseFromXyzRpy({0, 0, 0.1}, {0, 0, 0}));
   mesh.Append(MakeBoxMesh({0.12, 0.1, 0.35}), PoseFromXyzRpy({0.1, 0, 0.3}, {0, 0, 0}));
@@ -30,7 +29,7 @@ TriangleMesh Body() {
 }
 
 TEST(PoseVotingTest, FindsABodyMountedAnyWay) {
-  const SurfaceSamples model = SampleMeshSurface(Body(), 0.004, 3);
+  const SurfaceSamples model = SampleMeshSurface(LShapedBody(), 0.004, 3);
   SceneMesh decoy;
   decoy.mesh_world.Append(MakeBoxMesh({0.3, 0.3, 0.3}), PoseFromXyzRpy({-0.6, 0.5, 0.15}, {0, 0, 0.3}));
   decoy.kind = "clutter";
@@ -39,7 +38,7 @@ TEST(PoseVotingTest, FindsABodyMountedAnyWay) {
         PoseFromXyzRpy({0.0, -0.2, 1.4}, {M_PI, 0.0, -40.0 * kDeg})}) {      // hanging
     VirtualScanOptions options;
     options.spacing = 0.005;
-    const VirtualScan scan = testing_util::ScanLinkOnFloor(Body(), T_world_body, {decoy}, 7, options);
+    const VirtualScan scan = testing_util::ScanLinkOnFloor(LShapedBody(), T_world_body, {decoy}, 7, options);
     PoseVotingOptions voting;
     voting.reference_stride = 10;  // a small scene: enough references at a tenth
     const double voxel = VotingVoxel(SamplesDiameter(model), voting);

@@ -8,12 +8,11 @@
 #include <cmath>
 #include <vector>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/core/split_mix64.h"
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 // Tips mirrored about the line through `point` along `yaw`, at distances
 // `half_widths` either side and positions `along` on it, with noise.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "correspondence/correspondence_test_util.h"
+#include "edgefit/core/angles.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/surface_sampler.h"
 #include "edgefit/scanner/virtual_scanner.h"
@@ -29,7 +30,6 @@ using testing_util::LinkMesh;
 using testing_util::RotationErrorRad;
 using testing_util::TranslationError;
 
-constexpr double kDeg = M_PI / 180.0;
 constexpr double kTubeRadius = 0.028;  // [m]
 
 // The link held 1.1 m above the floor, as a robot's forearm would be.
@@ -42,7 +42,7 @@ struct TubeScene {
   double outlier_share = 0.0;  // tube points / (tube + link points)
 };
 
-const TubeScene& GetScene() {
+const TubeScene& GetTubeScene() {
   static TubeScene* scene = [] {
     auto* out = new TubeScene;
     // The cable (link frame): along the top of the long box, then up the
@@ -85,7 +85,7 @@ struct Errors {
 // weighted ICP, every match within 3 cm counts in every iteration; else
 // the engine's default gate schedule (3 cm halving to 5 mm).
 Errors FitLink(bool uniform_weights, bool fixed_gate) {
-  const TubeScene& s = GetScene();
+  const TubeScene& s = GetTubeScene();
   // Uniform weights: a search without weights.
   CorrespondenceSearch search(&s.scans, uniform_weights ? nullptr : &s.edges.w_edge);
   WeightedIcp icp(&s.scans, &search);
@@ -108,7 +108,7 @@ Errors FitLink(bool uniform_weights, bool fixed_gate) {
 }
 
 TEST(TubeOutlierTest, TubeIsAboutThirtyPercentAndNotEdges) {
-  const TubeScene& s = GetScene();
+  const TubeScene& s = GetTubeScene();
   std::printf("  tube share of link + tube points: %.3f; %zu edge points of %zu\n", s.outlier_share,
               s.edges.edge_points, s.edges.points);
   EXPECT_GT(s.outlier_share, 0.25);

@@ -10,13 +10,12 @@
 
 #include <cmath>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/model/primitive_meshes.h"
 #include "solvers/link_scan_test_util.h"
 
 namespace edgefit {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 const ScanSet& LevelScans() {
   static const ScanSet* scans = [] {

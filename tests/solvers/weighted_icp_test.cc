@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "edgefit/core/angles.h"
 #include "edgefit/model/surface_sampler.h"
 #include "solvers/icp_test_util.h"
 
@@ -21,8 +22,6 @@ using testing_util::CloudScan;
 using testing_util::LinkMesh;
 using testing_util::RotationErrorRad;
 using testing_util::TranslationError;
-
-constexpr double kDeg = M_PI / 180.0;
 
 struct Synthetic {
   SurfaceSamples samples;  // link frame

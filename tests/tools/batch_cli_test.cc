@@ -7,16 +7,15 @@
 
 namespace {
 
+using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliE2eTest;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
 namespace fs = std::filesystem;
 
-const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
-
 TEST_F(CliTest, BatchRunsEveryJobAndReportsTheFailedOne) {
-  ASSERT_EQ(Run("scan --urdf=" + kModel + " --scanners=2 --out=" + Path("arm.ptx") +
+  ASSERT_EQ(Run("scan --urdf=" + kBalancerArm + " --scanners=2 --out=" + Path("arm.ptx") +
                 " --truth=" + Path("truth.json"))
                 .exit_code,
             0);
@@ -24,11 +23,11 @@ TEST_F(CliTest, BatchRunsEveryJobAndReportsTheFailedOne) {
   const std::string manifest = Write("jobs.csv",
                                      "name,urdf,scan,out,options\n"
                                      "arm," +
-                                         kModel +
+                                         kBalancerArm +
                                          ",arm.ptx,arm_result.json,--truth=truth.json\n"
                                          "# a comment line\n"
                                          "lost," +
-                                         kModel + ",none.ptx,lost_result.json,\n");
+                                         kBalancerArm + ",none.ptx,lost_result.json,\n");
   const RunResult r = Run("batch --manifest=" + manifest);
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;  // one job failed
   EXPECT_NE(r.out.find("[1/2] arm: ok"), std::string::npos) << r.out;
@@ -76,7 +75,7 @@ TEST_F(CliTest, BatchRowsAndMergeFlags) {
   std::string rows = "name,urdf,scan,out\n";
   for (int k = 0; k < 5; ++k) {
     rows +=
-        "job" + std::to_string(k) + "," + kModel + ",missing.ptx,r" + std::to_string(k) + ".json\n";
+        "job" + std::to_string(k) + "," + kBalancerArm + ",missing.ptx,r" + std::to_string(k) + ".json\n";
   }
   const std::string manifest = Write("jobs.csv", rows);
   // --rows picks rows (ranges too), then the shards split them; the progress
@@ -109,7 +108,7 @@ TEST_F(CliTest, BatchShardsSplitTheRows) {
   std::string rows = "name,urdf,scan,out\n";
   for (int k = 0; k < 5; ++k) {
     rows +=
-        "job" + std::to_string(k) + "," + kModel + ",missing.ptx,r" + std::to_string(k) + ".json\n";
+        "job" + std::to_string(k) + "," + kBalancerArm + ",missing.ptx,r" + std::to_string(k) + ".json\n";
   }
   const std::string manifest = Write("jobs.csv", rows);
   const RunResult first = Run("batch --manifest=" + manifest + " --shard=0/2");
@@ -145,16 +144,16 @@ namespace {
 // (each result inline, or from --out_dir) and their errors against the truth.
 TEST_F(CliE2eTest, BatchRunsACellRowAndMergesItsInstances) {
   const std::string scene = Write(
-      "scene.json", "{\"assets\": [\n {\"name\": \"a\", \"urdf\": \"" + kModel +
+      "scene.json", "{\"assets\": [\n {\"name\": \"a\", \"urdf\": \"" + kBalancerArm +
                         "\", \"joints\": \"joint_1=20deg,joint_2=-0.3\", \"base\": [-1.0, 0, 0]},\n"
-                        " {\"name\": \"b\", \"urdf\": \"" + kModel +
+                        " {\"name\": \"b\", \"urdf\": \"" + kBalancerArm +
                         "\", \"joints\": \"joint_1=-30deg,joint_2=0.2\", \"base\": [1.0, 0.3, 90]}]}\n");
   ASSERT_EQ(Run("scan --scene=" + scene + " --scanners=3 --spacing_mm=6 --seed=3 --out=" +
                 Path("cell.e57") + " --truth=" + Path("truth.json"))
                 .exit_code,
             0);
   Write("models.json",
-        "{\"models\": [{\"name\": \"arm\", \"urdf\": \"" + kModel + "\", \"count\": 2}]}\n");
+        "{\"models\": [{\"name\": \"arm\", \"urdf\": \"" + kBalancerArm + "\", \"count\": 2}]}\n");
   const std::string manifest =
       Write("jobs.csv",
             "name,models,scan,out,options\n"
@@ -175,7 +174,7 @@ TEST_F(CliE2eTest, BatchRunsACellRowAndMergesItsInstances) {
   EXPECT_NE(csv.find(",arm_1/joint_1,revolute,"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",arm_2/joint_2,revolute,"), std::string::npos) << csv;
   ExpectBadInput("batch --manifest=" + Write("both.csv", "name,urdf,models,scan,out\n"
-                                                          "x," + kModel + ",models.json,c.e57,o.json\n"),
+                                                          "x," + kBalancerArm + ",models.json,c.e57,o.json\n"),
                  "give a 'urdf' (a fit) or a 'models' (a cell), one of them");
 }
 

@@ -19,6 +19,10 @@ namespace edgefit_cli_test {
 
 namespace fs = std::filesystem;
 
+// The small articulated model most CLI tests scan and fit.
+inline const std::string kBalancerArm =
+    std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
+
 struct RunResult {
   int exit_code = -1;
   bool signaled = false;

@@ -9,16 +9,15 @@
 
 namespace {
 
+using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
 namespace fs = std::filesystem;
 
-const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
-
 TEST_F(CliTest, EdgesWritesWeightsJsonAndPly) {
   const std::string scan = Path("arm.ptx"), labels = Path("arm.labels");
-  const RunResult s = Run("scan --urdf=" + kModel + " --accessories --scanners=2 --out=" + scan +
+  const RunResult s = Run("scan --urdf=" + kBalancerArm + " --accessories --scanners=2 --out=" + scan +
                           " --truth=" + Path("arm.json") + " --labels=" + labels);
   ASSERT_EQ(s.exit_code, 0) << s.err;
   const RunResult r = Run("edges --scan=" + scan + " --labels=" + labels + " --out_weights=" +
@@ -76,7 +75,7 @@ TEST_F(CliTest, EdgesBadInput) {
   ExpectBadInput("edges --scan=" + Path("none.ptx") + outs, "none.ptx");
   // Labels of another scan: the grids do not match.
   const std::string labels = Path("arm.labels");
-  ASSERT_EQ(Run("scan --urdf=" + kModel + " --spacing_mm=8 --out=" + Path("arm.ptx") +
+  ASSERT_EQ(Run("scan --urdf=" + kBalancerArm + " --spacing_mm=8 --out=" + Path("arm.ptx") +
                 " --truth=" + Path("arm.json") + " --labels=" + labels)
                 .exit_code,
             0);

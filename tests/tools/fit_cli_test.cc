@@ -7,21 +7,20 @@
 
 namespace {
 
+using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
 namespace fs = std::filesystem;
 
-const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
-
 TEST_F(CliTest, FitWritesTheResultContract) {
   const std::string scan = Path("arm.ptx"), truth = Path("truth.json");
-  ASSERT_EQ(Run("scan --urdf=" + kModel + " --accessories --scanners=2 --out=" + scan +
+  ASSERT_EQ(Run("scan --urdf=" + kBalancerArm + " --accessories --scanners=2 --out=" + scan +
                 " --truth=" + truth)
                 .exit_code,
             0);
   const RunResult r =
-      Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
+      Run("fit --urdf=" + kBalancerArm + " --scan=" + scan + " --truth=" + truth +
           " --out=" + Path("result.json") + " --out_joint_states=" + Path("j.yaml") +
           " --out_urdf=" + Path("fitted.urdf") + " --out_ply=" + Path("model.ply") +
           " --out_background=" + Path("background.ptx") + " --refine_chain" +
@@ -155,34 +154,34 @@ TEST_F(CliTest, FitBadInput) {
   const std::string conveyor = std::string(EDGEFIT_SOURCE_DIR) + "/assets/conveyor/conveyor.urdf";
   const std::string out = " --out=" + Path("result.json");
   ExpectBadInput("fit --scan=" + sample + out, "--urdf is required");
-  ExpectBadInput("fit --urdf=" + kModel + out, "--scan is required");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample, "--out is required");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + Path("none.ptx") + out, "none.ptx");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --roi=1,2,3",
+  ExpectBadInput("fit --urdf=" + kBalancerArm + out, "--scan is required");
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample, "--out is required");
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + Path("none.ptx") + out, "none.ptx");
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --roi=1,2,3",
                  "--roi: expected");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --roi=50,50,0,51,51,1",
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --roi=50,50,0,51,51,1",
                  "--roi: the box holds none of the");
   ExpectBadInput("fit --urdf=" + Path("none.urdf") + " --scan=" + sample + out, "none.urdf");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --weighting=heavy",
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --weighting=heavy",
                  "--weighting");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --init=1,2", "--init");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --loss=l3", "l3");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --up=0,0,0", "--up must");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --up=0,1", "--up must");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --mounting=roof",
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --init=1,2", "--init");
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --loss=l3", "l3");
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --up=0,0,0", "--up must");
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --up=0,1", "--up must");
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --mounting=roof",
                  "--mounting must");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --joints=nope=1",
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --joints=nope=1",
                  "nope");
   ExpectBadInput("fit --urdf=" + conveyor + " --scan=" + sample + out + " --kind=crane",
                  "--kind must be auto, articulated or conveyance");
   ExpectBadInput(
-      "fit --urdf=" + kModel + " --scan=" + sample + out + " --background_distance_mm=-1",
+      "fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --background_distance_mm=-1",
       "--background_distance_mm");
   // Output paths are checked before the scans are read, not after the fit.
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + Path("none.ptx") +
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + Path("none.ptx") +
                      " --out=" + Path("no_such_folder/result.json"),
                  "the folder " + Path("no_such_folder") + " does not exist");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + sample + out + " --out_urdf=" + Path(""),
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + sample + out + " --out_urdf=" + Path(""),
                  "is a folder, not a file name");
   EXPECT_FALSE(fs::exists(Path("result.json")));
 }

@@ -10,23 +10,22 @@
 
 namespace {
 
+using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
 namespace fs = std::filesystem;
 
-const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
-
 TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   const std::string scan = Path("arm.ptx"), truth = Path("truth.json");
-  ASSERT_EQ(Run("scan --urdf=" + kModel + " --scanners=2 --accessories --out=" + scan +
+  ASSERT_EQ(Run("scan --urdf=" + kBalancerArm + " --scanners=2 --accessories --out=" + scan +
                 " --truth=" + truth)
                 .exit_code,
             0);
   // The report in a folder of its own: it needs no file beside it.
   fs::create_directories(Path("report"));
   const std::string report = Path("report/arm report.html");
-  const RunResult r = Run("fit --urdf=" + kModel + " --scan=" + scan + " --truth=" + truth +
+  const RunResult r = Run("fit --urdf=" + kBalancerArm + " --scan=" + scan + " --truth=" + truth +
                           " --out=" + Path("result.json") + " --out_report='" + report + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string html = Slurp(report);
@@ -64,14 +63,14 @@ TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
 TEST_F(CliTest, ReportFromResultJson) {
   const std::string scan = Path("arm.ptx");
   ASSERT_EQ(
-      Run("scan --urdf=" + kModel + " --scanners=2 --out=" + scan + " --truth=" + Path("t.json"))
+      Run("scan --urdf=" + kBalancerArm + " --scanners=2 --out=" + scan + " --truth=" + Path("t.json"))
           .exit_code,
       0);
-  ASSERT_EQ(Run("fit --urdf=" + kModel + " --scan=" + scan + " --out=" + Path("result.json"))
+  ASSERT_EQ(Run("fit --urdf=" + kBalancerArm + " --scan=" + scan + " --out=" + Path("result.json"))
                 .exit_code,
             0);
   const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
-  EXPECT_EQ(result["inputs"]["urdf"], kModel);
+  EXPECT_EQ(result["inputs"]["urdf"], kBalancerArm);
   EXPECT_EQ(result["inputs"]["scan"][0], scan);
   const RunResult r = Run("report --result=" + Path("result.json") + " --out=" + Path("r.html"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -89,7 +88,7 @@ TEST_F(CliTest, ReportFromResultJson) {
 
 TEST_F(CliTest, FitReportToAMissingFolderIsBadInputBeforeTheFit) {
   const std::string report = Path("no_such_folder/r.html");
-  ExpectBadInput("fit --urdf=" + kModel + " --scan=" + std::string(EDGEFIT_SOURCE_DIR) +
+  ExpectBadInput("fit --urdf=" + kBalancerArm + " --scan=" + std::string(EDGEFIT_SOURCE_DIR) +
                      "/assets/samples/two_scans.ptx --out=" + Path("r.json") +
                      " --out_report=" + report,
                  "no_such_folder");

@@ -9,18 +9,17 @@
 
 namespace {
 
+using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
 namespace fs = std::filesystem;
 
-const std::string kModel = std::string(EDGEFIT_SOURCE_DIR) + "/assets/models/balancer_arm.urdf";
-
 class ScanCliTest : public CliTest {
  protected:
   // A small, fast scan of the balancer arm: coarse spacing, 2 scanners.
   std::string SmallScanArgs(const std::string& out, const std::string& truth) {
-    return "scan --urdf=" + kModel + " --joints=joint_1=20deg,joint_2=-0.3 --seed=3 " +
+    return "scan --urdf=" + kBalancerArm + " --joints=joint_1=20deg,joint_2=-0.3 --seed=3 " +
            "--scanners=2 --spacing_mm=6 --out=" + out + " --truth=" + truth;
   }
 };
@@ -99,7 +98,7 @@ TEST_F(ScanCliTest, E57HoldsTheSameScansAsPtx) {
     std::ofstream damaged(Path("damaged.e57"), std::ios::binary);
     damaged << bytes;
   }
-  const RunResult bad = Run("fit --urdf=" + kModel + " --scan=" + Path("damaged.e57") + " --out=" + Path("r.json"));
+  const RunResult bad = Run("fit --urdf=" + kBalancerArm + " --scan=" + Path("damaged.e57") + " --out=" + Path("r.json"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("damaged.e57: page "), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("fails its CRC-32C checksum"), std::string::npos) << bad.err;
@@ -108,7 +107,7 @@ TEST_F(ScanCliTest, E57HoldsTheSameScansAsPtx) {
 
 TEST_F(ScanCliTest, ExplicitScannerPositions) {
   const std::string out = Path("s.ptx"), truth = Path("s.json");
-  const RunResult r = Run("scan --urdf=" + kModel + " --spacing_mm=8 --out=" + out +
+  const RunResult r = Run("scan --urdf=" + kBalancerArm + " --spacing_mm=8 --out=" + out +
                           " --truth=" + truth + " --scanner_at=3,0.5,1.5:-2.5,-1,1.3,-20");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json t = nlohmann::json::parse(Slurp(truth));
@@ -123,7 +122,7 @@ TEST_F(ScanCliTest, ExplicitScannerPositions) {
   EXPECT_NEAR(T1[0][0].get<double>(), std::cos(-20.0 * M_PI / 180.0), 1e-12);
   EXPECT_NEAR(T1[1][0].get<double>(), std::sin(-20.0 * M_PI / 180.0), 1e-12);
   EXPECT_EQ(t["settings"]["scanners"].get<int>(), 2);
-  ExpectBadInput("scan --urdf=" + kModel + " --out=" + Path("u.ptx") + " --truth=" +
+  ExpectBadInput("scan --urdf=" + kBalancerArm + " --out=" + Path("u.ptx") + " --truth=" +
                      Path("u.json") + " --scanner_at=1,2",
                  "--scanner_at");
   EXPECT_FALSE(fs::exists(Path("u.ptx")));
@@ -132,16 +131,16 @@ TEST_F(ScanCliTest, ExplicitScannerPositions) {
 TEST_F(ScanCliTest, BadInputLeavesNoOutput) {
   const std::string out = Path("x.ptx"), truth = Path("x.json");
   ExpectBadInput("scan --out=" + out + " --truth=" + truth, "--urdf (or --scene) is required");
-  ExpectBadInput("scan --urdf=" + kModel + " --out=" + Path("x.xyz") + " --truth=" + truth,
+  ExpectBadInput("scan --urdf=" + kBalancerArm + " --out=" + Path("x.xyz") + " --truth=" + truth,
                  ".ptx, .e57 or .pcd");
   ExpectBadInput(SmallScanArgs(out, truth) + " --base=1,2", "--base");
-  ExpectBadInput("scan --urdf=" + kModel + " --joints=joint_7=0.1 --out=" + out +
+  ExpectBadInput("scan --urdf=" + kBalancerArm + " --joints=joint_7=0.1 --out=" + out +
                      " --truth=" + truth,
                  "joint_7");
-  ExpectBadInput("scan --urdf=" + kModel + " --joints=joint_2=90deg --out=" + out +
+  ExpectBadInput("scan --urdf=" + kBalancerArm + " --joints=joint_2=90deg --out=" + out +
                      " --truth=" + truth,
                  "outside its limits");
-  ExpectBadInput("scan --urdf=" + kModel + " --random_pose --joints=joint_1=0 --out=" + out +
+  ExpectBadInput("scan --urdf=" + kBalancerArm + " --random_pose --joints=joint_1=0 --out=" + out +
                      " --truth=" + truth,
                  "at most one of");
   // The truth cannot be written: the scan that was already written is removed.
