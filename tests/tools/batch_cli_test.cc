@@ -7,14 +7,16 @@
 
 namespace {
 
-using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliE2eTest;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
+using edgefit_cli_test::kBalancerArm;
 namespace fs = std::filesystem;
 
-TEST_F(CliTest, BatchRunsEveryJobAndReportsTheFailedOne) {
+// A whole fit as a job: the release half (e2e); under the sanitizers
+// BatchRowsAndMergeFlags and BatchShardsSplitTheRows run jobs that fail.
+TEST_F(CliE2eTest, BatchRunsEveryJobAndReportsTheFailedOne) {
   ASSERT_EQ(Run("scan --urdf=" + kBalancerArm + " --scanners=2 --out=" + Path("arm.ptx") +
                 " --truth=" + Path("truth.json"))
                 .exit_code,

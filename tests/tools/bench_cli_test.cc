@@ -35,7 +35,10 @@ void ExpectBenchReport(CliTest* test, const std::string& html, const std::string
   EXPECT_EQ(test->BrowserStatus(html, &dom), "ok: 3 tables, 1 charts") << html;
 }
 
-TEST_F(CliTest, BenchPrintsThePapersTables) {
+// A conveyor fit through the bench: the release half (e2e); under the
+// sanitizers the fit runs in SmallSceneFitTest and the tables' code in
+// BenchReportFromSavedRuns.
+TEST_F(CliE2eTest, BenchPrintsThePapersTables) {
   const RunResult r = Run("bench --assets=conveyor --conveyor_urdf=" + kAssets +
                           "conveyor/conveyor.urdf --conveyor_postures=" + kAssets +
                           "conveyor/postures.json --only=load --scenes=without "
@@ -54,6 +57,22 @@ TEST_F(CliTest, BenchPrintsThePapersTables) {
   for (const auto& [joint, error] : json[0]["joint_errors"].items()) {
     EXPECT_LT(error.get<double>(), 0.002) << joint;  // 8 mm spacing: within 2 mm
   }
+}
+
+// The bench's tables and report from saved runs (tests/tools/data: 8 fits of
+// the conveyor by an earlier bench), in both halves.
+TEST_F(CliTest, BenchReportFromSavedRuns) {
+  const std::string runs =
+      std::string(EDGEFIT_SOURCE_DIR) + "/tests/tools/data/bench_runs_conveyor.json";
+  const RunResult r = Run("report --bench=" + runs + " --out=" + Path("bench.html"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("## Table 2: translation error per joint [mm]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| load | with | uniform | 0.0630 |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| conveyor | random_4 | with | uniform |"), std::string::npos) << r.out;
+  const std::string page = Slurp(Path("bench.html"));
+  EXPECT_NE(page.find("Table 2: translation error per joint [mm]"), std::string::npos);
+  EXPECT_NE(page.find("carriage_1_joint"), std::string::npos);
+  EXPECT_EQ(page.find("src=\""), std::string::npos) << "the page loads no file";
 }
 
 TEST_F(CliE2eTest, BenchRunsTheProductOfItsAblationAxes) {

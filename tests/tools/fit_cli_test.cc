@@ -7,10 +7,11 @@
 
 namespace {
 
-using edgefit_cli_test::kBalancerArm;
+using edgefit_cli_test::CliE2eTest;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
+using edgefit_cli_test::kBalancerArm;
 namespace fs = std::filesystem;
 
 TEST_F(CliTest, FitWritesTheResultContract) {
@@ -125,7 +126,9 @@ TEST_F(CliTest, FitWritesTheResultContract) {
   EXPECT_EQ(valid + removed, original_valid);
 }
 
-TEST_F(CliTest, FitTellsAConveyorFromItsModel) {
+// The release half (e2e); under the sanitizers the conveyance fit runs in
+// SmallSceneFitTest.ConveyorFromItsArmTips.
+TEST_F(CliE2eTest, FitTellsAConveyorFromItsModel) {
   // --kind=auto: a model with prismatic joints only is a conveyance system;
   // its base's rough pose comes from the arm tips (paper Sec. 6.1).
   const std::string conveyor = std::string(EDGEFIT_SOURCE_DIR) + "/assets/conveyor/conveyor.urdf";

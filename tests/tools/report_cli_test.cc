@@ -10,12 +10,13 @@
 
 namespace {
 
-using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
+using edgefit_cli_test::kBalancerArm;
 namespace fs = std::filesystem;
 
+// The fit's report, and edgefit report from its result.json.
 TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   const std::string scan = Path("arm.ptx"), truth = Path("truth.json");
   ASSERT_EQ(Run("scan --urdf=" + kBalancerArm + " --scanners=2 --accessories --out=" + scan +
@@ -38,6 +39,24 @@ TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   }
   EXPECT_FALSE(fs::exists(Path("report/arm report_station_3.png")));
 
+  // edgefit report makes the same report from result.json, whose inputs
+  // (absolute paths) name the model and scans: from any folder.
+  const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
+  EXPECT_EQ(result["inputs"]["urdf"], kBalancerArm);
+  EXPECT_EQ(result["inputs"]["scan"][0], scan);
+  const RunResult again = Run("report --result=" + Path("result.json") + " --out=" + Path("r.html"));
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const std::string from_result = Slurp(Path("r.html"));
+  EXPECT_NE(from_result.find("\"joint_2\""), std::string::npos);
+  EXPECT_NE(from_result.find("THREE.OrbitControls"), std::string::npos);
+  // Not a fit's result: bad input, nothing written.
+  ExpectBadInput("report --result=" + Path("result.json") + "x --out=" + Path("x.html"),
+                 "result.jsonx");
+  Write("other.json", "{\"joints\": {}}");
+  ExpectBadInput("report --result=" + Path("other.json") + " --out=" + Path("x.html"),
+                 "other.json: not a result.json of edgefit fit");
+  EXPECT_FALSE(fs::exists(Path("x.html")));
+
   if (!HaveBrowser()) {
     GTEST_SKIP() << "chromium is not installed (./scripts/install-deps.sh installs it)";
   }
@@ -56,34 +75,6 @@ TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
                            "valid edge regions (", "edge map (Sec. 4, Eq. 6)"}) {
     EXPECT_NE(page.find(text), std::string::npos) << text;
   }
-}
-
-// edgefit report makes the same report from result.json, whose inputs
-// (absolute paths) name the model and scans: from any folder.
-TEST_F(CliTest, ReportFromResultJson) {
-  const std::string scan = Path("arm.ptx");
-  ASSERT_EQ(
-      Run("scan --urdf=" + kBalancerArm + " --scanners=2 --out=" + scan + " --truth=" + Path("t.json"))
-          .exit_code,
-      0);
-  ASSERT_EQ(Run("fit --urdf=" + kBalancerArm + " --scan=" + scan + " --out=" + Path("result.json"))
-                .exit_code,
-            0);
-  const nlohmann::json result = nlohmann::json::parse(Slurp(Path("result.json")));
-  EXPECT_EQ(result["inputs"]["urdf"], kBalancerArm);
-  EXPECT_EQ(result["inputs"]["scan"][0], scan);
-  const RunResult r = Run("report --result=" + Path("result.json") + " --out=" + Path("r.html"));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string html = Slurp(Path("r.html"));
-  EXPECT_NE(html.find("\"joint_2\""), std::string::npos);
-  EXPECT_NE(html.find("THREE.OrbitControls"), std::string::npos);
-  // Not a fit's result: bad input, nothing written.
-  ExpectBadInput("report --result=" + Path("result.json") + "x --out=" + Path("x.html"),
-                 "result.jsonx");
-  Write("other.json", "{\"joints\": {}}");
-  ExpectBadInput("report --result=" + Path("other.json") + " --out=" + Path("x.html"),
-                 "other.json: not a result.json of edgefit fit");
-  EXPECT_FALSE(fs::exists(Path("x.html")));
 }
 
 TEST_F(CliTest, FitReportToAMissingFolderIsBadInputBeforeTheFit) {

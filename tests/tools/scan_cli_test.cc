@@ -9,10 +9,10 @@
 
 namespace {
 
-using edgefit_cli_test::kBalancerArm;
 using edgefit_cli_test::CliTest;
 using edgefit_cli_test::RunResult;
 using edgefit_cli_test::Slurp;
+using edgefit_cli_test::kBalancerArm;
 namespace fs = std::filesystem;
 
 class ScanCliTest : public CliTest {
