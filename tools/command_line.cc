@@ -122,9 +122,7 @@ namespace {
 
 const auto kStart = std::chrono::steady_clock::now();
 
-double SecondsSinceStart() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - kStart).count();
-}
+double SecondsSinceStart() { return SecondsSince(kStart); }
 
 // "42 s", "3:05", "1:02:09".
 std::string Duration(double seconds) {
@@ -156,8 +154,7 @@ ProgressCounter::ProgressCounter(size_t total)
     : total_(total), start_(std::chrono::steady_clock::now()) {}
 
 std::string ProgressCounter::Next() {
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = SecondsSince(start_);
   std::string text = std::to_string(++started_) + "/" + std::to_string(total_);
   if (started_ > 1 && started_ <= total_) {
     const double per_item = elapsed / static_cast<double>(started_ - 1);

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "costs/robust_loss.h"
+#include "edgefit/core/median.h"
 #include "solvers/registration/icp_step.h"
 
 namespace edgefit {
@@ -265,12 +266,7 @@ void WeightedIcp::Measure(const SurfaceSamples& samples, const Pose& T_world_lin
     ++inliers;
   }
   summary->inliers = inliers;
-  if (!distances.empty()) {
-    const size_t mid = distances.size() / 2;
-    std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(mid),
-                     distances.end());
-    summary->median_distance = distances[mid];
-  }
+  if (!distances.empty()) summary->median_distance = MedianInPlace(&distances);
   summary->inlier_share =
       summary->visible_points > 0
           ? static_cast<double>(summary->inliers) / static_cast<double>(summary->visible_points)

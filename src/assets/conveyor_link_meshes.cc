@@ -128,9 +128,9 @@ TriangleMesh Clamp() {
 }  // namespace
 
 std::vector<LinkMesh> ConveyorLinkMeshes() {
-  return {{"base_link", ConveyorBaseLink()},      {"carriage_1", Carriage()},
-          {"lifter_1", Lifter(true)},     {"carriage_2", Carriage()},
-          {"lifter_2", Lifter(false)},    {"clamp_2_left", Clamp()},
+  return {{"base_link", ConveyorBaseLink()}, {"carriage_1", Carriage()},
+          {"lifter_1", Lifter(true)},        {"carriage_2", Carriage()},
+          {"lifter_2", Lifter(false)},       {"clamp_2_left", Clamp()},
           {"clamp_2_right", Clamp()}};
 }
 

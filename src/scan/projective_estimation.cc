@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "edgefit/core/median.h"
 #include "edgefit/scan/lattice_estimation.h"
 
 namespace edgefit {
@@ -42,9 +43,7 @@ bool RobustLine(const std::vector<double>& a, const std::vector<double>& pixel, 
     }
     *rms = std::sqrt(sum_sq / n);
     std::vector<double> sorted = residuals;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
-                     sorted.end());
-    const double limit = std::max(0.05, 3.0 * sorted[sorted.size() / 2]);
+    const double limit = std::max(0.05, 3.0 * MedianInPlace(&sorted));
     for (size_t i = 0; i < a.size(); ++i) keep[i] = residuals[i] <= limit;
   }
   return true;

@@ -59,11 +59,11 @@ TEST_F(CliE2eTest, BenchPrintsThePapersTables) {
   }
 }
 
-// The bench's tables and report from saved runs (tests/tools/data: 8 fits of
-// the conveyor by an earlier bench), in both halves.
+// The bench's tables and report from saved runs (8 fits of the conveyor kept
+// in benchmarks/results), in both halves.
 TEST_F(CliTest, BenchReportFromSavedRuns) {
-  const std::string runs =
-      std::string(EDGEFIT_SOURCE_DIR) + "/tests/tools/data/bench_runs_conveyor.json";
+  const std::string runs = std::string(EDGEFIT_SOURCE_DIR) +
+                           "/benchmarks/results/2026-11-27-unmixed-refinement-conveyor-after.json";
   const RunResult r = Run("report --bench=" + runs + " --out=" + Path("bench.html"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("## Table 2: translation error per joint [mm]"), std::string::npos) << r.out;

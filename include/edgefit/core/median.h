@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace edgefit {
 
-// Reorders *values; it must not be empty.
+// Reorders *values; NaN when it is empty.
 inline double MedianInPlace(std::vector<double>* values) {
+  if (values->empty()) return std::numeric_limits<double>::quiet_NaN();
   const size_t mid = values->size() / 2;
   std::nth_element(values->begin(), values->begin() + static_cast<std::ptrdiff_t>(mid),
                    values->end());
