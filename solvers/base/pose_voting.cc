@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "edgefit/core/point_kdtree.h"
 
@@ -66,17 +67,32 @@ float Theta(const Eigen::Isometry3f& T, const Eigen::Vector3f& p) {
   return std::atan2(q.z(), q.y());
 }
 
+// The voxel of p (in voxel units c) and its key.
+int64_t VoxelKey(const Eigen::Vector3f& p, double voxel, Eigen::Vector3f* c,
+                 Eigen::Vector3f* corner) {
+  *c = p / static_cast<float>(voxel);
+  *corner = Eigen::Vector3f(std::floor(c->x()), std::floor(c->y()), std::floor(c->z()));
+  return (static_cast<int64_t>(corner->x()) & 0x1fffff) << 42 |
+         (static_cast<int64_t>(corner->y()) & 0x1fffff) << 21 |
+         (static_cast<int64_t>(corner->z()) & 0x1fffff);
+}
+
+// The voxels of `voxel` [m] the model's samples occupy.
+size_t OccupiedVoxels(const SurfaceSamples& model, double voxel) {
+  std::unordered_set<int64_t> keys;
+  Eigen::Vector3f c, f;
+  for (const Eigen::Vector3f& p : model.points) keys.insert(VoxelKey(p, voxel, &c, &f));
+  return keys.size();
+}
+
 // One sample per voxel of the model: the sample nearest the voxel centre.
 void ThinModel(const SurfaceSamples& model, double voxel, std::vector<Eigen::Vector3f>* points,
                std::vector<Eigen::Vector3f>* normals) {
   std::unordered_map<int64_t, std::pair<float, size_t>> best;  // voxel -> (distance, sample)
   std::vector<int64_t> order;
   for (size_t i = 0; i < model.size(); ++i) {
-    const Eigen::Vector3f c = model.points[i] / static_cast<float>(voxel);
-    const Eigen::Vector3f f(std::floor(c.x()), std::floor(c.y()), std::floor(c.z()));
-    const int64_t key = (static_cast<int64_t>(f.x()) & 0x1fffff) << 42 |
-                        (static_cast<int64_t>(f.y()) & 0x1fffff) << 21 |
-                        (static_cast<int64_t>(f.z()) & 0x1fffff);
+    Eigen::Vector3f c, f;
+    const int64_t key = VoxelKey(model.points[i], voxel, &c, &f);
     const float d = (c - f - Eigen::Vector3f::Constant(0.5f)).squaredNorm();
     auto it = best.find(key);
     if (it == best.end()) {
@@ -122,17 +138,33 @@ std::vector<VotedPose> Cluster(std::vector<VotedPose> candidates, double max_tra
 
 bool PoseVotingOptions::IsValid(std::string* error) const {
   if (!(sampling_share > 0.0 && sampling_share < 1.0)) *error = "sampling_share must be in (0, 1)";
-  else if (!(max_voxel > 0.0)) *error = "max_voxel must be > 0";
+  else if (min_model_points < 3) *error = "min_model_points must be >= 3";
+  else if (!(min_voxel > 0.0)) *error = "min_voxel must be > 0";
   else if (angle_bins < 4 || angle_bins > 63) *error = "angle_bins must be in [4, 63]";
   else if (reference_stride < 1) *error = "reference_stride must be >= 1";
+  else if (max_references < 1) *error = "max_references must be >= 1";
   else if (!(normal_radius_voxels >= 1.0)) *error = "normal_radius_voxels must be >= 1";
   else if (max_poses < 1) *error = "max_poses must be >= 1";
   else return true;
   return false;
 }
 
-double VotingVoxel(double diameter, const PoseVotingOptions& options) {
-  return std::min(options.max_voxel, options.sampling_share * diameter);
+double VotingVoxel(const std::vector<SurfaceSamples>& bodies, const PoseVotingOptions& options) {
+  double diameter = 0.0;
+  for (const SurfaceSamples& body : bodies) diameter = std::max(diameter, SamplesDiameter(body));
+  double voxel = std::max(options.min_voxel, options.sampling_share * diameter);
+  // A surface's voxels grow as 1 / voxel^2: a few steps reach the count.
+  for (int step = 0; step < 6 && voxel > options.min_voxel; ++step) {
+    size_t fewest = SIZE_MAX;
+    for (const SurfaceSamples& body : bodies) {
+      fewest = std::min(fewest, OccupiedVoxels(body, voxel));
+    }
+    const double need = static_cast<double>(options.min_model_points);
+    if (bodies.empty() || static_cast<double>(fewest) >= 0.95 * need) break;
+    voxel = std::max(options.min_voxel,
+                     voxel * std::sqrt(static_cast<double>(std::max<size_t>(fewest, 1)) / need));
+  }
+  return voxel;
 }
 
 OrientedCloud VotingScene(const ScanSet& scans, double voxel, const PoseVotingOptions& options) {
@@ -187,8 +219,12 @@ Status VoteModelPoses(const OrientedCloud& scene, double voxel, const SurfaceSam
   PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   const float radius_sq = static_cast<float>(diameter * diameter);
   const int bins = options.angle_bins;
-  const int references = static_cast<int>((scene.size() + options.reference_stride - 1) /
-                                          static_cast<size_t>(options.reference_stride));
+  const size_t stride =
+      std::max({static_cast<size_t>(options.reference_stride),
+                (scene.size() + static_cast<size_t>(options.max_references) - 1) /
+                    static_cast<size_t>(options.max_references),
+                size_t{1}});
+  const int references = static_cast<int>((scene.size() + stride - 1) / stride);
   summary->references = static_cast<size_t>(references);
   std::vector<VotedPose> best(static_cast<size_t>(references));
 #pragma omp parallel
@@ -198,7 +234,7 @@ Status VoteModelPoses(const OrientedCloud& scene, double voxel, const SurfaceSam
     std::vector<std::pair<uint32_t, float>> found;
 #pragma omp for schedule(dynamic, 16)
     for (int r = 0; r < references; ++r) {
-      const size_t s = static_cast<size_t>(r) * static_cast<size_t>(options.reference_stride);
+      const size_t s = static_cast<size_t>(r) * stride;
       const Eigen::Vector3f& p = scene.points[s];
       const Eigen::Vector3f& n = scene.normals[s];
       const Eigen::Isometry3f T_s = ToReferenceFrame(p, n);

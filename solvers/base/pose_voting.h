@@ -7,11 +7,11 @@
 // For two points with normals (m1, n1), (m2, n2) and d = m2 - m1, the pair
 // feature F = (|d|, angle(n1, d), angle(n2, d), angle(n1, n2)) does not
 // change with the body's pose. The model's pairs are hashed by F, quantized
-// (distance: sampling_share of the model's diameter D; angles: 2 pi /
-// angle_bins); pairs of one plane (normals parallel, both across the pair)
-// are left out: they tell no pose, and a floor is made of them. Each
-// reference point s_r of the scene (every
-// reference_stride-th of the oriented cloud) pairs with every scene point
+// (distance: the voxel, VotingVoxel; angles: 2 pi / angle_bins); pairs of
+// one plane (normals parallel, both across the pair) are left out: they
+// tell no pose, and a floor is made of them. Each reference point s_r of
+// the scene (every reference_stride-th of the oriented cloud, or sparser
+// to keep at most max_references) pairs with every scene point
 // within D; each model pair with the same F votes for (m_r, alpha): the
 // model point s_r is, and the turn alpha about s_r's normal that brings
 // the pair onto the scene's. With T_s (T_m) moving s_r (m_r) to the origin
@@ -36,14 +36,23 @@ namespace edgefit {
 
 struct PoseVotingOptions {
   // Sampling of model and scene, and the distance bin, as a share of the
-  // model's diameter (Drost et al.'s tau_d).
+  // model's diameter (Drost et al.'s tau_d) ...
   double sampling_share = 0.05;
-  // The scene is never thinned coarser than this [m]. The work grows as
-  // (diameter / voxel)^4: with a 4 cm cap the 2.7 m base and first links of
-  // the bundled robot took 738 s on a virtual depth frame, 4 s at 5 %.
-  double max_voxel = 0.2;
+  // ... made finer, down to min_voxel [m], until every body voted for has
+  // at least min_model_points samples (one per voxel): a compact body has
+  // them at about 5 % (a cube 730), a slim arm does not. The whole LBR Med7
+  // (1.17 m) at 5 % had 271, two voxels across its links, and normals over
+  // normal_radius_voxels that were its links' axes: its calibration on a
+  // real frame was voted onto clutter 1.7 m away; at 3.4 cm (800) it is
+  // found. The work grows with the samples (the model's pairs and the
+  // scene's points at that voxel), not with the diameter.
+  int min_model_points = 800;
+  double min_voxel = 0.01;
   int angle_bins = 30;        // angles quantized to 2 pi / angle_bins (12 deg)
-  int reference_stride = 3;   // every n-th scene point is a reference
+  int reference_stride = 3;   // every n-th scene point is a reference ...
+  // ... and at most this many: the work is the references times the scene
+  // points within the diameter of each.
+  int max_references = 4000;
   // The normals' neighbourhood, in voxels.
   double normal_radius_voxels = 2.5;
   // Poses this close are one cluster: translation (share of the diameter)
@@ -69,10 +78,10 @@ struct PoseVotingSummary {
   double seconds = 0.0;
 };
 
-// The voxel [m] the body of diameter `diameter` [m] is matched at, and the
-// scene cloud for it (MakeOrientedCloud with the voting's normal radius and
-// region): one scene serves every body of about that size.
-double VotingVoxel(double diameter, const PoseVotingOptions& options);
+// The voxel [m] the bodies (surface samples, body frame) are matched at,
+// and the scene cloud for it (MakeOrientedCloud with the voting's normal
+// radius and region): one scene serves them all.
+double VotingVoxel(const std::vector<SurfaceSamples>& bodies, const PoseVotingOptions& options);
 OrientedCloud VotingScene(const ScanSet& scans, double voxel, const PoseVotingOptions& options);
 // The diameter of the samples' bounding box [m].
 double SamplesDiameter(const SurfaceSamples& samples);

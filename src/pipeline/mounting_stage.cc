@@ -94,9 +94,7 @@ Status VoteBasePoses(const KinematicModel& model, const ScanSet& scans, const Bo
                      const ProgressFn& say, std::vector<RoughPose>* roughs) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<SurfaceSamples> bodies = VotingBodies(model, base, cad, options);
-  double diameter = 0.0;
-  for (const SurfaceSamples& body : bodies) diameter = std::max(diameter, SamplesDiameter(body));
-  const double voxel = VotingVoxel(diameter, options.base.voting);
+  const double voxel = VotingVoxel(bodies, options.base.voting);
   const OrientedCloud scene = VotingScene(scans, voxel, options.base.voting);
   WeightedIcpOptions register_vote = options.base.icp;
   register_vote.correspondence.max_distance = std::max(2.0 * voxel, options.noise.gate);
