@@ -43,14 +43,15 @@ edgefit_add_test(small_scene_fit_test
   SOURCES pipeline/small_scene_fit_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::scanner edgefit::scene edgefit::model glog::glog)
 # Unit tests: the instance crop, result.json of a fit that stopped early,
-# the survey's frame and the stations' corrections.
+# the survey's frame and the stations' corrections, the joint trust rules.
 edgefit_add_test(pipeline_unit_test
   SOURCES pipeline/instance_crop_test.cc pipeline/result_json_test.cc pipeline/stations_test.cc
-          pipeline/noise_scale_test.cc
+          pipeline/noise_scale_test.cc pipeline/joint_trust_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::model edgefit_test_synthetic)
 # e2e: real depth frames of a real robot (../shared/data/real; skips
-# without it): the calibration with its recorded joints, and every joint
-# fitted, against the robot's readings (frame 003; frame 004 beside clutter).
+# without it): the calibration with its recorded joints (frames 002, 003),
+# and every joint fitted, against the robot's readings (frame 003; frame 004
+# beside clutter).
 edgefit_add_test(real_frame_fit_test SINGLE_PROCESS E2E COST 150
   SOURCES pipeline/real_frame_fit_test.cc
   LIBS edgefit::pipeline edgefit::io edgefit::model nlohmann_json::nlohmann_json)

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "edgefit/pipeline/joint_trust.h"
 #include "stages.h"
 
 namespace edgefit {
@@ -90,6 +91,11 @@ std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const Fi
                   "%s is not trusted: %s = %.4f fits its link, but a body between the base and "
                   "it does not match the scan",
                   b.link.c_str(), b.joint.c_str(), value);
+  } else if (b.partner_torn) {
+    std::snprintf(line, sizeof(line),
+                  "%s is not trusted: %s = %.4f was fitted with the joint below it, which has "
+                  "two values that fit the scan about as well",
+                  b.link.c_str(), b.joint.c_str(), value);
   } else if (b.better_elsewhere) {
     std::snprintf(line, sizeof(line),
                   "%s is in a wrong basin: %s = %.4f, with the joints below it fitted again "
@@ -114,39 +120,6 @@ std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const Fi
                   1e3 * b.ambiguity_margin);
   }
   return line;
-}
-
-// A body matches the scan when it is seen and its samples lie on it.
-bool Matches(const BodyQuality& b) {
-  return b.verdict != JointVerdict::kMismatch && b.verdict != JointVerdict::kNotSeen;
-}
-
-// No joint is ok below a body that does not match (the base's included):
-// a joint's value is the turn between two links, and a link the scan does
-// not confirm may be anywhere (on a depth frame, the base on a round pillar
-// with a wrist that fits the pillar too).
-void DistrustBelowUnmatched(const KinematicModel& model, FitResult* result) {
-  std::vector<const BodyQuality*> body_of_link(model.links().size(), nullptr);
-  for (const BodyQuality& b : result->bodies) {
-    const int link = model.LinkIndex(b.link);
-    if (link >= 0) body_of_link[static_cast<size_t>(link)] = &b;
-  }
-  auto chain_matches = [&](int joint) {
-    for (int link = model.joints()[static_cast<size_t>(joint)].parent_link; link >= 0;) {
-      const BodyQuality* body = body_of_link[static_cast<size_t>(link)];
-      if (body != nullptr && !Matches(*body)) return false;
-      const int up = model.links()[static_cast<size_t>(link)].parent_joint;
-      link = up < 0 ? -1 : model.joints()[static_cast<size_t>(up)].parent_link;
-    }
-    return true;
-  };
-  for (BodyQuality& b : result->bodies) {
-    if (b.verdict != JointVerdict::kOk || b.joint.empty()) continue;
-    if (chain_matches(model.JointIndex(b.joint))) continue;
-    b.verdict = JointVerdict::kAmbiguous;
-    b.chain_unmatched = true;
-    b.ok = false;
-  }
 }
 
 }  // namespace
@@ -245,6 +218,7 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     result->bodies.push_back(quality);
   }
   DistrustBelowUnmatched(model, result);
+  DistrustAboveTornPartner(model, result);
   SayWhyNotOk(model, resolved, options, result);
   return Status::Ok();
 }

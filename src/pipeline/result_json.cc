@@ -88,9 +88,11 @@ json JointStatusJson(const KinematicModel& model, const FitResult& fit, const js
       case JointVerdict::kAmbiguous:
         v["reason"] = b.unpinned         ? "not pinned: its standard deviation is above the bar"
                       : b.chain_unmatched ? "a body between the base and it does not match the scan"
+                      : b.partner_torn
+                          ? "the joint swept with it has two values that fit about as well"
                       : b.better_elsewhere ? "another value fits the scan better"
                                            : "another value fits the scan about as well";
-        if (!b.unpinned && !b.chain_unmatched) {
+        if (!b.unpinned && !b.chain_unmatched && !b.partner_torn) {
           alternatives.push_back({{"value", b.alternative_value},
                                   {"loss_margin_m", NumberOrNull(b.ambiguity_margin)}});
         }

@@ -1,0 +1,30 @@
+// Joints whose own bodies fit, not trusted for their neighbours' sake:
+// rules over a fit's verdicts (FitResult::bodies, parents first), applied
+// after each body has been judged alone (src/pipeline/quality.cc). A joint
+// they touch becomes ambiguous and says why.
+#ifndef EDGEFIT_PIPELINE_JOINT_TRUST_H_
+#define EDGEFIT_PIPELINE_JOINT_TRUST_H_
+
+#include "edgefit/model/kinematic_model.h"
+#include "edgefit/pipeline/fit_result.h"
+
+namespace edgefit {
+
+// No joint is ok below a body that does not match (the base's included):
+// a joint's value is the turn between two links, and a link the scan does
+// not confirm may be anywhere (on a depth frame, the base on a round pillar
+// with a wrist that fits the pillar too). Sets chain_unmatched.
+void DistrustBelowUnmatched(const KinematicModel& model, FitResult* result);
+
+// On a noisy scan (noise_scale > 1) no round joint (symmetric: its sweep
+// and ICP carried its children) is ok when its partner, the first joint
+// below its body, with which it was fitted, has two values that fit about
+// as well: on a virtual depth frame of the Med7 its wrist flipped (A5 142
+// degrees off, the flip fitting as well) took the elbow A4 5.7 degrees off
+// with a standard deviation of 0.8 degrees. On laser scans the pairs are
+// told apart; the rule does not apply there. Sets partner_torn.
+void DistrustAboveTornPartner(const KinematicModel& model, FitResult* result);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_PIPELINE_JOINT_TRUST_H_
