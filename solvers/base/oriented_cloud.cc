@@ -16,15 +16,14 @@ struct VoxelSum {
   int scan = 0;  // the first scan that saw it (its scanner orients the normal)
 };
 
+}  // namespace
+
 int64_t VoxelKey(const Eigen::Vector3d& p, double voxel) {
-  // 21 bits per axis: +-1 M voxels, +-20 km at 2 cm.
   const int64_t x = static_cast<int64_t>(std::floor(p.x() / voxel)) & 0x1fffff;
   const int64_t y = static_cast<int64_t>(std::floor(p.y() / voxel)) & 0x1fffff;
   const int64_t z = static_cast<int64_t>(std::floor(p.z() / voxel)) & 0x1fffff;
   return (x << 42) | (y << 21) | z;
 }
-
-}  // namespace
 
 bool OrientedCloudOptions::IsValid(std::string* error) const {
   if (!(voxel > 0.0)) *error = "voxel must be > 0";

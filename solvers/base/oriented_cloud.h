@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct OrientedCloud {
 // The thinned, oriented cloud of every valid point of `scans`, in voxel
 // order (deterministic, any thread count).
 OrientedCloud MakeOrientedCloud(const ScanSet& scans, const OrientedCloudOptions& options);
+
+// The key of the voxel of edge `voxel` [m] that holds p: 21 bits per axis,
+// +-1 M voxels (+-20 km at 2 cm).
+int64_t VoxelKey(const Eigen::Vector3d& p, double voxel);
 
 }  // namespace edgefit
 

@@ -67,21 +67,10 @@ float Theta(const Eigen::Isometry3f& T, const Eigen::Vector3f& p) {
   return std::atan2(q.z(), q.y());
 }
 
-// The voxel of p (in voxel units c) and its key.
-int64_t VoxelKey(const Eigen::Vector3f& p, double voxel, Eigen::Vector3f* c,
-                 Eigen::Vector3f* corner) {
-  *c = p / static_cast<float>(voxel);
-  *corner = Eigen::Vector3f(std::floor(c->x()), std::floor(c->y()), std::floor(c->z()));
-  return (static_cast<int64_t>(corner->x()) & 0x1fffff) << 42 |
-         (static_cast<int64_t>(corner->y()) & 0x1fffff) << 21 |
-         (static_cast<int64_t>(corner->z()) & 0x1fffff);
-}
-
 // The voxels of `voxel` [m] the model's samples occupy.
 size_t OccupiedVoxels(const SurfaceSamples& model, double voxel) {
   std::unordered_set<int64_t> keys;
-  Eigen::Vector3f c, f;
-  for (const Eigen::Vector3f& p : model.points) keys.insert(VoxelKey(p, voxel, &c, &f));
+  for (const Eigen::Vector3f& p : model.points) keys.insert(VoxelKey(p.cast<double>(), voxel));
   return keys.size();
 }
 
@@ -91,8 +80,9 @@ void ThinModel(const SurfaceSamples& model, double voxel, std::vector<Eigen::Vec
   std::unordered_map<int64_t, std::pair<float, size_t>> best;  // voxel -> (distance, sample)
   std::vector<int64_t> order;
   for (size_t i = 0; i < model.size(); ++i) {
-    Eigen::Vector3f c, f;
-    const int64_t key = VoxelKey(model.points[i], voxel, &c, &f);
+    const int64_t key = VoxelKey(model.points[i].cast<double>(), voxel);
+    const Eigen::Vector3f c = model.points[i] / static_cast<float>(voxel);
+    const Eigen::Vector3f f(std::floor(c.x()), std::floor(c.y()), std::floor(c.z()));
     const float d = (c - f - Eigen::Vector3f::Constant(0.5f)).squaredNorm();
     auto it = best.find(key);
     if (it == best.end()) {

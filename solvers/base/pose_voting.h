@@ -43,7 +43,7 @@ struct PoseVotingOptions {
   // them at about 5 % (a cube 730), a slim arm does not. The whole LBR Med7
   // (1.17 m) at 5 % had 271, two voxels across its links, and normals over
   // normal_radius_voxels that were its links' axes: its calibration on a
-  // real frame was voted onto clutter 1.7 m away; at 3.4 cm (800) it is
+  // real frame was voted onto clutter 1.7 m away; at 3.4 cm (885) it is
   // found. The work grows with the samples (the model's pairs and the
   // scene's points at that voxel), not with the diameter.
   int min_model_points = 800;

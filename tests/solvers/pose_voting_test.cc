@@ -69,8 +69,8 @@ TEST(PoseVotingTest, ASlimBodyIsVotedAtAFinerVoxel) {
   // diagonal): it stays near 5 %.
   const SurfaceSamples cube = SampleMeshSurface(MakeBoxMesh({0.6, 0.6, 0.6}), 0.004, 3);
   EXPECT_GT(VotingVoxel({cube}, voting), 0.9 * voting.sampling_share * SamplesDiameter(cube));
-  // A rod 1.2 m long, 12 cm thick (an arm's link) has about 130 at 6 cm
-  // (two voxels across it): its voxel is about 2 cm.
+  // A rod 1.2 m long, 12 cm thick (an arm's link) is two voxels across
+  // at 6 cm: its voxel is about 2 cm (1.9 cm measured).
   const SurfaceSamples rod = SampleMeshSurface(MakeCylinderMesh(0.06, 1.2, 64), 0.004, 3);
   const double rod_share = voting.sampling_share * SamplesDiameter(rod);
   const double rod_voxel = VotingVoxel({rod}, voting);

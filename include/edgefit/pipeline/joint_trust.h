@@ -21,8 +21,8 @@ void DistrustBelowUnmatched(const KinematicModel& model, FitResult* result);
 // below its body, with which it was fitted, has two values that fit about
 // as well: on a virtual depth frame of the Med7 its wrist flipped (A5 142
 // degrees off, the flip fitting as well) took the elbow A4 5.7 degrees off
-// with a standard deviation of 0.8 degrees. On laser scans the pairs are
-// told apart; the rule does not apply there. Sets partner_torn.
+// with a standard deviation of 0.8 degrees. Laser scans (noise_scale 1)
+// are left as they were. Sets partner_torn.
 void DistrustAboveTornPartner(const KinematicModel& model, FitResult* result);
 
 }  // namespace edgefit
