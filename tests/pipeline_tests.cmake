@@ -46,7 +46,7 @@ edgefit_add_test(small_scene_fit_test
 # the survey's frame and the stations' corrections, the joint trust rules.
 edgefit_add_test(pipeline_unit_test
   SOURCES pipeline/instance_crop_test.cc pipeline/result_json_test.cc pipeline/stations_test.cc
-          pipeline/noise_scale_test.cc pipeline/joint_trust_test.cc
+          pipeline/noise_scale_test.cc pipeline/joint_trust_test.cc pipeline/quality_test.cc
   LIBS edgefit::pipeline edgefit::bench edgefit::model edgefit_test_synthetic)
 # e2e: real depth frames of a real robot (../shared/data/real; skips
 # without it): the calibration with its recorded joints (frames 002, 003),

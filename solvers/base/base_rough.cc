@@ -34,7 +34,21 @@ bool BaseRoughOptions::IsValid(std::string* error) const {
       single_corner_rescored < 1) {
     return fail("bad single-corner search options");
   }
+  if (!(noise_reference > 0.0) || !(max_noise_scale >= 1.0)) {
+    return fail("noise_reference must be > 0 and max_noise_scale >= 1");
+  }
   return true;
+}
+
+BaseRoughOptions BaseRoughOptions::ScaledToNoise(double sigma) const {
+  BaseRoughOptions scaled = *this;
+  const double k = std::clamp(sigma / noise_reference, 1.0, max_noise_scale);
+  if (!(k > 1.0)) return scaled;  // NaN (no measurement) too
+  scaled.corners.radius *= k;
+  scaled.corners.separation *= k;
+  scaled.pair_tolerance *= k;
+  scaled.inlier_distance *= k;
+  return scaled;
 }
 
 namespace {

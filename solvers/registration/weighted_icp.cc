@@ -103,9 +103,9 @@ WeightedIcp::WeightedIcp(const ScanSet* scans, CorrespondenceSearch* search,
   CHECK(scans_ != nullptr && search_ != nullptr);
 }
 
-void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
-                                WeightedIcpOptions::Visibility visibility, double gate,
-                                double max_view_gap) {
+size_t WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
+                                  WeightedIcpOptions::Visibility visibility, double gate,
+                                  double max_view_gap) {
   const Eigen::Matrix3d R = T_world_link.linear();
   const Eigen::Vector3d& t = T_world_link.translation();
   const bool has_normals = samples.normals.size() == samples.points.size();
@@ -113,17 +113,21 @@ void WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_wor
   p_used_link_.clear();
   n_used_link_.clear();
   q_world_.clear();
+  size_t occluded = 0;
   for (size_t i = 0; i < samples.points.size(); ++i) {
     const Eigen::Vector3d q = R * samples.points[i].cast<double>() + t;
     if (filter) {
       const Eigen::Vector3d n = R * samples.normals[i].cast<double>();
       const bool facing_only = visibility == WeightedIcpOptions::Visibility::kFacing;
-      if (visibility_.BestView(q, n, gate, facing_only, max_view_gap) != ScanView::kSeen) continue;
+      const ScanView view = visibility_.BestView(q, n, gate, facing_only, max_view_gap);
+      occluded += view == ScanView::kOccluded;
+      if (view != ScanView::kSeen) continue;
     }
     p_used_link_.push_back(samples.points[i]);
     if (has_normals) n_used_link_.push_back(samples.normals[i]);
     q_world_.push_back(q.cast<float>());
   }
+  return occluded;
 }
 
 Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
@@ -243,7 +247,8 @@ void WeightedIcp::Measure(const SurfaceSamples& samples, const Pose& T_world_lin
       samples.normals.size() == samples.points.size() && options.quality_reach > gate;
   CorrespondenceOptions gated = options.correspondence;
   gated.max_distance = plane ? options.quality_reach : gate;
-  SelectAndPose(samples, T_world_link, options.visibility, gate, options.quality_max_view_gap);
+  summary->occluded_points =
+      SelectAndPose(samples, T_world_link, options.visibility, gate, options.quality_max_view_gap);
   summary->visible_points = q_world_.size();
   search_->Find(q_world_, crop_world, gated, &correspondences_);
   const Eigen::Matrix3d R = T_world_link.linear();

@@ -134,6 +134,10 @@ struct WeightedIcpSummary {
   // and their RMS distance [m] (unweighted; see WeightedIcpOptions::quality_reach).
   size_t source_points = 0;   // all CAD samples
   size_t visible_points = 0;  // samples a scanner could see at the returned pose
+  // Samples facing a scanner, in its window, but behind the surface it
+  // scanned there (kOccluded at best): hidden by something in front, or
+  // placed inside or behind a scanned surface.
+  size_t occluded_points = 0;
   size_t inliers = 0;         // of the visible samples
   double inlier_share = 0.0;
   double rms = 0.0;
@@ -192,9 +196,10 @@ class WeightedIcp {
   const ResidualOptions residuals_;
   // Selects the samples used at pose T (WeightedIcpOptions::visibility)
   // into p_used_link_ and poses them into q_world_; `gate` [m] is the
-  // occlusion tolerance (max_view_gap: WeightedIcpOptions).
-  void SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
-                     WeightedIcpOptions::Visibility visibility, double gate, double max_view_gap);
+  // occlusion tolerance (max_view_gap: WeightedIcpOptions). Returns how
+  // many samples were occluded at best (0 without the range-image test).
+  size_t SelectAndPose(const SurfaceSamples& samples, const Pose& T_world_link,
+                       WeightedIcpOptions::Visibility visibility, double gate, double max_view_gap);
   // The quality fields of *summary at T_world_link with gate [m].
   void Measure(const SurfaceSamples& samples, const Pose& T_world_link,
                const WeightedIcpOptions& options, double gate,

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "edgefit/scan/scan_noise.h"
 #include "solvers/base/base_hypotheses.h"
 #include "solvers/base/base_rough.h"
 #include "solvers/base/conveyance_base_rough.h"
@@ -175,13 +176,28 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const B
   Status upright = Status::Error("not tried (any mounting)");
   std::vector<Pose> upright_poses;
   if (mounting != Mounting::kAny) {
+    // The section corners' distances widened to the scan's local noise
+    // (BaseRoughOptions::ScaledToNoise): a depth camera's few millimetres.
+    FitOptions scaled = options;
+    const double sigma = EstimateScanNoise(scans, ScanNoiseOptions()).median_sigma;
+    scaled.base.cross_sections = options.base.cross_sections.ScaledToNoise(sigma);
+    if (scaled.base.cross_sections.inlier_distance > options.base.cross_sections.inlier_distance) {
+      char line[200];
+      std::snprintf(line, sizeof(line),
+                    "base: the scan's local noise is %.1f mm: section corners and matches at "
+                    "%.1f times their distances",
+                    1e3 * sigma,
+                    scaled.base.cross_sections.inlier_distance /
+                        options.base.cross_sections.inlier_distance);
+      say(line);
+    }
     const Eigen::Matrix3d R_level =
         up_given ? LevellingRotation(result->up) : Eigen::Matrix3d::Identity();
-    upright = UprightPoses(model, scans, R_level, base_mesh, base_loss, base_sweep.size(), options,
+    upright = UprightPoses(model, scans, R_level, base_mesh, base_loss, base_sweep.size(), scaled,
                            say, result, &upright_poses);
     if (!upright.ok()) result->base_rough.candidates.clear();
     if (!up_given && mounting == Mounting::kAuto && camera) {
-      UprightPosesOnThePlane(model, scans, base_mesh, base_loss, base_sweep.size(), options, say,
+      UprightPosesOnThePlane(model, scans, base_mesh, base_loss, base_sweep.size(), scaled, say,
                              result, &upright_poses);
       if (!upright_poses.empty()) upright = Status::Ok();
     }

@@ -28,6 +28,9 @@ bool QualityOptions::IsValid(std::string* error) const {
     return fail("min_inlier_share must be in [0, 1]");
   }
   if (!(max_rms > 0.0)) return fail("max_rms must be > 0");
+  if (!(min_base_seen_share >= 0.0 && min_base_seen_share <= 1.0)) {
+    return fail("min_base_seen_share must be in [0, 1]");
+  }
   return observability.IsValid(error);
 }
 

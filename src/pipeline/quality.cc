@@ -16,11 +16,16 @@ BodyQuality Quality(const KinematicModel& model, const Body& body, const Surface
   if (body.joint >= 0) quality.joint = model.joints()[static_cast<size_t>(body.joint)].name;
   quality.samples = samples.size();
   quality.visible = summary.visible_points;
+  quality.occluded = summary.occluded_points;
   quality.inlier_share = summary.inlier_share;
   quality.rms = summary.rms;
   quality.icp_iterations = summary.iterations;
   quality.ok = summary.inlier_share >= options.min_inlier_share && summary.rms <= options.max_rms;
   quality.verdict = quality.ok ? JointVerdict::kOk : JointVerdict::kMismatch;
+  if (body.joint < 0 && quality.SeenShare() < options.min_base_seen_share) {
+    quality.ok = false;
+    quality.verdict = JointVerdict::kNotSeen;
+  }
   return quality;
 }
 
@@ -50,7 +55,14 @@ std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const Fi
   const double value =
       b.joint.empty() ? 0.0 : result.q[static_cast<size_t>(model.JointIndex(b.joint))];
   char line[512];
-  if (b.verdict == JointVerdict::kNotSeen) {
+  if (b.verdict == JointVerdict::kNotSeen && b.joint.empty()) {
+    std::snprintf(line, sizeof(line),
+                  "%s is not seen: %zu of its %zu samples facing the stations are in view "
+                  "(%.0f%%, need %.0f%%); the others lie behind scanned surfaces: hidden, or "
+                  "fitted inside or behind something that is not it",
+                  b.link.c_str(), b.visible, b.visible + b.occluded, 100.0 * b.SeenShare(),
+                  100.0 * options.quality.min_base_seen_share);
+  } else if (b.verdict == JointVerdict::kNotSeen) {
     std::snprintf(line, sizeof(line),
                   "%s is not seen: %zu of its %zu samples are visible from the stations at the "
                   "fitted pose (need %zu); %s = %.4f is a guess",

@@ -38,6 +38,7 @@ json PerLinkJson(const FitResult& fit) {
     per_link[b.link] = {{"joint", b.joint},
                         {"samples", b.samples},
                         {"visible", b.visible},
+                        {"occluded", b.occluded},
                         {"inlier_share", b.inlier_share},
                         {"rms_m", b.rms},
                         {"symmetric", b.symmetric},

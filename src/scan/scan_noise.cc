@@ -45,6 +45,7 @@ double PlaneDistance(const OrganizedScan& scan, int r, int c, const ScanNoiseOpt
 
 bool ScanNoiseOptions::IsValid(std::string* error) const {
   if (stride < 1) *error = "stride must be >= 1";
+  else if (max_cells < 1) *error = "max_cells must be >= 1";
   else if (half_window < 1) *error = "half_window must be >= 1";
   else if (min_neighbours < 3) *error = "min_neighbours must be >= 3";
   else if (!(bin > 0.0)) *error = "bin must be > 0";
@@ -71,10 +72,14 @@ ScanNoise EstimateScanNoise(const ScanSet& scans, const ScanNoiseOptions& option
   std::vector<double> all;
   for (const OrganizedScan& scan : scans.scans) {
     if (!scan.organized()) continue;
-    std::vector<size_t> cells;
     size_t valid = 0;
+    for (size_t i = 0; i < scan.size(); ++i) valid += scan.IsValid(i);
+    const size_t stride = std::max({static_cast<size_t>(options.stride), size_t{1},
+                                    valid / static_cast<size_t>(options.max_cells)});
+    std::vector<size_t> cells;
+    valid = 0;
     for (size_t i = 0; i < scan.size(); ++i) {
-      if (scan.IsValid(i) && valid++ % static_cast<size_t>(options.stride) == 0) cells.push_back(i);
+      if (scan.IsValid(i) && valid++ % stride == 0) cells.push_back(i);
     }
     std::vector<double> distance(cells.size());
 #pragma omp parallel for schedule(static)

@@ -2,11 +2,12 @@
 // (scanner/depth_camera.h: a 960 x 540 stereo-like camera about 3 m away, depth
 // noise 2.5 mm at 1 m growing with depth^2 and correlated over 12 pixels,
 // flying pixels), fitted with the default options as `edgefit fit` fits a
-// real frame (pose voting of any mounting: the upright search finds no
-// corners in so noisy a frame): no joint said ok more than 4 degrees off,
-// none on a base that was not found. The base is not always found on such
-// frames (benchmarks/results/2026-11-28-virtual-depth-frames.md): this
-// scene's is not, the same posture scanned by `edgefit scan` is.
+// real frame: no joint said ok more than 4 degrees off, none on a base that
+// was not found, and such a base not ok itself. The base is not always
+// found on such frames (benchmarks/results/2026-11-29-noisy-sections.md):
+// this scene's was voted onto a round pillar 4 m away until the upright
+// search's section corners were scaled to the frame's noise; now it is
+// found 15 mm off (tilted 5 degrees).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,13 +55,18 @@ TEST(DepthFrameFitTest, TheRobotSeenByADepthCamera) {
               fit.message.c_str());
   // Whatever the frame lets it find, nothing confident is wrong: a joint
   // said ok is within 4 degrees, and a base off by more than 6 cm (not
-  // found: the round pillars of the clutter look like its round base) has
-  // no joint said ok and the fit said not ok.
-  const bool found = errors.base_translation < 0.06 && errors.base_rotation < 2.0 * kDeg;
+  // found: the round pillars of the clutter look like its round base) is
+  // not ok itself (most of it lies behind scanned surfaces), has no joint
+  // said ok, and the fit is said not ok.
+  const bool found = errors.base_translation < 0.06;
+  const BodyQuality& base = fit.bodies.front();
+  std::printf("  base %s: %zu of %zu samples facing the camera in view\n",
+              JointVerdictName(base.verdict), base.visible, base.visible + base.occluded);
+  if (!found) {
+    EXPECT_NE(base.verdict, JointVerdict::kOk) << "a base that is not there said ok";
+  }
   int ok = 0;
   for (const BodyQuality& b : fit.bodies) {
-    // The base link alone may fit a pillar (its own verdict); its joints
-    // may not.
     if (b.verdict != JointVerdict::kOk || b.joint.empty()) continue;
     const size_t j = static_cast<size_t>(model.JointIndex(b.joint));
     const double error = std::abs(std::remainder(fit.q[j] - q[j], 2.0 * M_PI));

@@ -14,6 +14,8 @@
 
 #include "edgefit/core/angles.h"
 #include "edgefit/model/primitive_meshes.h"
+#include "edgefit/core/split_mix64.h"
+#include "solvers/base/cross_sections.h"
 #include "solvers/base/floor_height.h"
 #include "solvers/icp_test_util.h"
 #include "solvers/link_scan_test_util.h"
@@ -77,6 +79,53 @@ TEST(BaseRoughTest, BadSingleCornerOptionsAreRejected) {
   std::string error;
   EXPECT_FALSE(options.IsValid(&error));
   EXPECT_NE(error.find("single-corner"), std::string::npos) << error;
+}
+
+// A square section 0.6 m wide, a point every 2 mm, scattered across its
+// sides by 4 mm (a depth camera's few millimetres): at the laser scan's
+// distances its straight runs read as corners and the four real ones are
+// lost among them; scaled to the noise, the four corners are found.
+TEST(BaseRoughTest, CornersScaledToTheNoiseFindASquaresCorners) {
+  constexpr double kHalf = 0.3, kSigma = 0.004;
+  SplitMix64 rng(7);
+  auto gauss = [&rng] {  // Box-Muller
+    const double u = 1.0 - rng.Uniform();  // (0, 1]
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * rng.Uniform());
+  };
+  Section section;
+  const Eigen::Vector2d corners[4] = {{-kHalf, -kHalf}, {kHalf, -kHalf}, {kHalf, kHalf}, {-kHalf, kHalf}};
+  for (int side = 0; side < 4; ++side) {
+    const Eigen::Vector2d a = corners[side], b = corners[(side + 1) % 4];
+    const Eigen::Vector2d across(-(b - a).y() / (2 * kHalf), (b - a).x() / (2 * kHalf));
+    for (double s = 0.0; s < 2 * kHalf; s += 0.002) {
+      section.points.push_back(a + (b - a) * (s / (2 * kHalf)) + kSigma * gauss() * across);
+    }
+  }
+  auto found = [&](const BaseRoughOptions& options) {
+    int near = 0;
+    const std::vector<int> found = SectionCorners(section, options.corners);
+    for (const int i : found) {
+      for (const Eigen::Vector2d& c : corners) near += (section.points[static_cast<size_t>(i)] - c).norm() < 0.03;
+    }
+    std::printf("  radius %.0f mm: %zu corners, %d at the square's\n", 1e3 * options.corners.radius,
+                found.size(), near);
+    return std::make_pair(found.size(), near);
+  };
+  const auto laser = found(BaseRoughOptions());
+  EXPECT_FALSE(laser.first == 4 && laser.second == 4);
+  const auto scaled = found(BaseRoughOptions().ScaledToNoise(kSigma));
+  EXPECT_EQ(scaled.first, 4u);
+  EXPECT_EQ(scaled.second, 4);
+}
+
+TEST(BaseRoughTest, ScalingToNoiseKeepsLaserScansAndIsBounded) {
+  const BaseRoughOptions options;
+  EXPECT_EQ(options.ScaledToNoise(0.0008).inlier_distance, options.inlier_distance);
+  EXPECT_EQ(options.ScaledToNoise(NAN).corners.radius, options.corners.radius);
+  const BaseRoughOptions wide = options.ScaledToNoise(1.0);
+  EXPECT_DOUBLE_EQ(wide.corners.radius, options.max_noise_scale * options.corners.radius);
+  EXPECT_DOUBLE_EQ(wide.pair_tolerance, options.max_noise_scale * options.pair_tolerance);
+  EXPECT_EQ(wide.max_edge, options.max_edge);
 }
 
 }  // namespace

@@ -34,6 +34,13 @@ struct BodyQuality {
   std::string joint;   // the joint that moves it ("" for the base)
   size_t samples = 0;  // CAD samples
   size_t visible = 0;  // seen at the fitted pose
+  size_t occluded = 0;  // facing a station, behind what it scanned there
+  // visible / (visible + occluded); 1 when none faces a station in its window.
+  double SeenShare() const {
+    return visible + occluded == 0
+               ? 1.0
+               : static_cast<double>(visible) / static_cast<double>(visible + occluded);
+  }
   double inlier_share = 0.0;
   double rms = 0.0;          // [m]
   bool symmetric = false;    // the sweep included the child's loss

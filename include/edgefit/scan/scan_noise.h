@@ -21,7 +21,8 @@
 namespace edgefit {
 
 struct ScanNoiseOptions {
-  int stride = 5;        // every n-th valid cell is measured
+  int stride = 5;        // every n-th valid cell is measured,
+  int max_cells = 100000;  // and at most about this many per scan (a wider stride)
   int half_window = 3;   // [cells]
   int min_neighbours = 12;
   double bin = 0.5;      // range bin [m]
