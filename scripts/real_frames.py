@@ -136,6 +136,8 @@ def main():
   parser.add_argument("--modes", default="unknown,calibration")
   parser.add_argument("--turn_deg", type=float, default=0.0,
                       help="fit copies of the PCD frames whose VIEWPOINT is turned by this about x")
+  parser.add_argument("--flags", default="",
+                      help="more edgefit fit flags for every fit, space-separated (an ablation)")
   args = parser.parse_args()
 
   if not os.path.isdir(os.path.join(args.set_dir, "frames")):
@@ -165,7 +167,7 @@ def main():
       references = {k: mat_mul(turn, t) for k, t in references.items()}
     primary = truth.get("reference_method", next(iter(references)))
     for mode, score in scores.items():
-      extra = []
+      extra = args.flags.split()
       if mode == "calibration":
         extra.append("--joints=" + ",".join("%s=%.9f" % kv for kv in truth["joints"].items()))
       result, seconds = run_fit(args.edgefit, args.set_dir, urdf, frame,

@@ -1,6 +1,7 @@
 // The fit's thresholds scaled to the scans' noise (noise_scale.h): laser
 // scans keep theirs; a depth camera's centimetre widens them in
-// proportion, the occlusion tolerances to 3 sigma at least.
+// proportion, the occlusion tolerances to 3 sigma at least, and seek no
+// coverings.
 #include "edgefit/pipeline/noise_scale.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@ TEST(NoiseScaleTest, LaserScansKeepTheirThresholds) {
   EXPECT_EQ(same.chain.sweep.tau_dist, options.chain.sweep.tau_dist);
   EXPECT_EQ(same.quality.max_rms, options.quality.max_rms);
   EXPECT_EQ(same.refinement.chain.cad_deviation, options.refinement.chain.cad_deviation);
+  EXPECT_EQ(same.refinement.coverings.rounds, options.refinement.coverings.rounds);
 }
 
 TEST(NoiseScaleTest, ADepthCamerasCentimetreWidensThem) {
@@ -37,6 +39,8 @@ TEST(NoiseScaleTest, ADepthCamerasCentimetreWidensThem) {
             options.base.icp.correspondence.max_distance);
   // The correlated error in the covariance's patches.
   EXPECT_DOUBLE_EQ(scaled.refinement.chain.cad_deviation, sigma);
+  // No coverings: a jacket's millimetres are inside the noise.
+  EXPECT_EQ(scaled.refinement.coverings.rounds, 0);
   // Bounded, and off when asked.
   EXPECT_DOUBLE_EQ(NoiseScaleFor(1.0, options.noise), options.noise.max_scale);
   FitOptions off = options;

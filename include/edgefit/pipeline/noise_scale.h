@@ -12,7 +12,8 @@
 // its matched samples to their scan points (robust to clutter and parts the
 // CAD lacks). Every distance threshold is then multiplied by
 //   k = clamp(sigma / reference_sigma, 1, max_scale)
-// (the occlusion tolerances and final gates to at least 3 sigma):
+// (the occlusion tolerances and final gates to at least 3 sigma), and
+// coverings are not sought (a jacket's millimetres are inside the noise):
 // laser scans keep the thresholds they were measured with (k = 1), a depth
 // camera's are widened in proportion; loss margins per sample (the sweeps'
 // Eq. (9) saturates at tau_dist) scale with them.
@@ -31,7 +32,8 @@ double NoiseScaleFor(double sigma, const NoiseOptions& options);
 // `options` for scans whose noise is sigma [m]: with k = NoiseScaleFor
 // every distance threshold (gates, tolerances, the verdict's RMS, loss
 // margins) multiplied by k, the occlusion tolerances and final gates to at
-// least 3 sigma, the covariance's patch deviation at least sigma (the
+// least 3 sigma, no coverings, the covariance's patch deviation at least
+// sigma (the
 // sensor's error is correlated); angles, counts and shares unchanged. k = 1
 // (laser scans) returns `options` as they are.
 FitOptions ScaledToNoise(const FitOptions& options, double sigma);
