@@ -67,13 +67,13 @@ FitOptions ScaledToNoise(const FitOptions& options, double sigma) {
   refinement.chain.cad_deviation = std::max(refinement.chain.cad_deviation, sigma);
   refinement.coverings.gate *= k;
   // No coverings: a jacket lies 2-5 mm off its link, inside a depth
-  // camera's noise, and what stands out of the CAD over an area is the
-  // camera's correlated error. At k times the laser's offsets 20-40 % of the
-  // points matched on the real ZED 2i frames were taken for coverings; at 2
-  // and 4 sigma 3 %, yet enough of one link to fit the chain again without
-  // them. Both leaned the links into the points left (those inside the CAD)
-  // and flipped a shoulder; the fit without coverings had the better base and
-  // joints on all 5 frames.
+  // camera's noise, and what stands out of the CAD over an area there is the
+  // camera's correlated error. Left out, it is a one-sided trim of the noise
+  // that leans the links into the points kept (inside the CAD): on the real
+  // ZED 2i frames, coverings at k times the laser's offsets took 20-40 % of
+  // the matched points, and at 2 and 4 sigma still a fifth of a link; with
+  // none, the bases and most joints were nearer on all 5 frames
+  // (benchmarks/results/2026-11-29-no-coverings-on-noisy-scans.md).
   refinement.coverings.rounds = 0;
   StationAlignmentOptions& stations = scaled.stations;
   stations.final_gate = Grow(stations.final_gate, k, floor);

@@ -33,9 +33,8 @@ double NoiseScaleFor(double sigma, const NoiseOptions& options);
 // every distance threshold (gates, tolerances, the verdict's RMS, loss
 // margins) multiplied by k, the occlusion tolerances and final gates to at
 // least 3 sigma, no coverings, the covariance's patch deviation at least
-// sigma (the
-// sensor's error is correlated); angles, counts and shares unchanged. k = 1
-// (laser scans) returns `options` as they are.
+// sigma (the sensor's error is correlated); angles, counts and shares
+// unchanged. k = 1 (laser scans) returns `options` as they are.
 FitOptions ScaledToNoise(const FitOptions& options, double sigma);
 
 }  // namespace edgefit
