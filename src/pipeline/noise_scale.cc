@@ -65,7 +65,6 @@ FitOptions ScaledToNoise(const FitOptions& options, double sigma) {
   // 11 mm against the CAD): in the covariance each patch deviates as a
   // whole, as the CAD's own deviation does.
   refinement.chain.cad_deviation = std::max(refinement.chain.cad_deviation, sigma);
-  refinement.coverings.gate *= k;
   // No coverings: a jacket lies 2-5 mm off its link, inside a depth
   // camera's noise, and what stands out of the CAD over an area there is the
   // camera's correlated error. Left out, it is a one-sided trim of the noise
