@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <lzf.h>
+
 #include "binary_field.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/pcd.h"
@@ -80,13 +82,13 @@ Status ParseHeader(const std::string& name, LineCursor* cursor, PcdHeader* h) {
       }
       if (!io_internal::OnlyBlanks(p, e)) return Status::Error(where + "VIEWPOINT needs 7 numbers");
     } else if (key == "DATA") {
-      if (tokens.size() != 2) return Status::Error(where + "DATA needs one of ascii, binary");
-      h->data = std::string(tokens[1]);
-      if (h->data == "binary_compressed") {
-        return Status::Error(where + "DATA binary_compressed is unsupported (use ascii or binary)");
+      if (tokens.size() != 2) {
+        return Status::Error(where + "DATA needs one of ascii, binary, binary_compressed");
       }
-      if (h->data != "ascii" && h->data != "binary") {
-        return Status::Error(where + "unknown DATA '" + h->data + "' (expected ascii or binary)");
+      h->data = std::string(tokens[1]);
+      if (h->data != "ascii" && h->data != "binary" && h->data != "binary_compressed") {
+        return Status::Error(where + "unknown DATA '" + h->data +
+                             "' (expected ascii, binary or binary_compressed)");
       }
     } else {
       return Status::Error(where + "unknown PCD header key '" + key + "'");
@@ -148,6 +150,54 @@ std::array<uint8_t, 3> Unpack(uint32_t v) {
           static_cast<uint8_t>(v & 255u)};
 }
 
+// DATA binary_compressed (PCL's pcl::PCDWriter::writeBinaryCompressed):
+// uint32 compressed size, uint32 uncompressed size (little endian), then
+// LZF-compressed bytes that hold each field's values for every point in
+// turn (field by field, not point by point). Sets *records to the points'
+// records as DATA binary lays them out.
+Status DecompressRecords(const std::string& name, const PcdHeader& h, int64_t points,
+                         const char* data, int64_t left, std::string* records) {
+  if (left < 8) return Status::Error(name + ": binary_compressed data ends before its two sizes");
+  const bool swap = !io_internal::HostIsLittleEndian();
+  uint32_t sizes[2];
+  for (int i = 0; i < 2; ++i) io_internal::LoadBytes(data + 4 * i, 4, swap, &sizes[i]);
+  const int64_t compressed = sizes[0], uncompressed = sizes[1];
+  const int64_t expected = points * h.record_bytes;
+  if (uncompressed != expected) {
+    return Status::Error(name + ": binary_compressed holds " + std::to_string(uncompressed) +
+                         " bytes, but " + std::to_string(points) + " points of " +
+                         std::to_string(h.record_bytes) + " bytes need " + std::to_string(expected));
+  }
+  if (compressed > left - 8) {
+    return Status::Error(name + ": binary_compressed promises " + std::to_string(compressed) +
+                         " compressed bytes but only " + std::to_string(left - 8) +
+                         " follow (file truncated?)");
+  }
+  // LZF grows a byte to at most 88 (a 3-byte reference to 264 bytes): a
+  // larger claim is a corrupt header, refused before it is allocated.
+  if (uncompressed > 88 * compressed + 32) {
+    return Status::Error(name + ": binary_compressed claims " + std::to_string(uncompressed) +
+                         " bytes from " + std::to_string(compressed) + " (corrupt sizes)");
+  }
+  std::string fields(static_cast<size_t>(uncompressed), '\0');
+  if (lzf_decompress(data + 8, static_cast<unsigned>(compressed), fields.data(),
+                     static_cast<unsigned>(uncompressed)) != static_cast<unsigned>(uncompressed)) {
+    return Status::Error(name + ": binary_compressed data does not decompress to " +
+                         std::to_string(uncompressed) + " bytes (corrupt LZF stream)");
+  }
+  records->assign(static_cast<size_t>(expected), '\0');
+  const char* block = fields.data();  // this field's values for every point
+  for (const PcdField& f : h.fields) {
+    const size_t bytes = static_cast<size_t>(f.size) * static_cast<size_t>(f.count);
+    for (int64_t p = 0; p < points; ++p) {
+      std::memcpy(records->data() + p * h.record_bytes + f.offset,
+                  block + p * static_cast<int64_t>(bytes), bytes);
+    }
+    block += points * static_cast<int64_t>(bytes);
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status ParsePcd(std::string_view content, const std::string& name, const ReadOptions& options,
@@ -163,7 +213,10 @@ Status ParsePcd(std::string_view content, const std::string& name, const ReadOpt
   }
   const int64_t n = h.width * h.height;
   const int64_t left = cursor.end() - cursor.position();
-  if (h.data == "binary" ? n * h.record_bytes > left : n > (left + 1) / 2) {
+  std::string decompressed;  // binary_compressed: the records, laid out as binary
+  if (h.data == "binary_compressed") {
+    EDGEFIT_RETURN_IF_ERROR(DecompressRecords(name, h, n, cursor.position(), left, &decompressed));
+  } else if (h.data == "binary" ? n * h.record_bytes > left : n > (left + 1) / 2) {
     return Status::Error(name + ": header promises " + std::to_string(n) + " points but only " +
                          std::to_string(left) + " bytes of data follow (file truncated?)");
   }
@@ -183,9 +236,9 @@ Status ParsePcd(std::string_view content, const std::string& name, const ReadOpt
 
   std::vector<double> values(static_cast<size_t>(h.tokens));
   uint32_t packed = 0;
-  const bool binary = h.data == "binary";
+  const bool binary = h.data != "ascii";
   const bool swap = !io_internal::HostIsLittleEndian();
-  const char* data = cursor.position();
+  const char* data = h.data == "binary_compressed" ? decompressed.data() : cursor.position();
   for (int64_t f = 0; f < n; ++f) {
     auto where = [&]() {
       return binary ? name + ": point " + std::to_string(f + 1) + ": " : AtLine(name, cursor.line());

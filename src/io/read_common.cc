@@ -1,5 +1,7 @@
 #include "read_common.h"
 
+#include "camera_grid.h"
+
 #include "edgefit/scan/lattice_estimation.h"
 
 #include <string>
@@ -12,8 +14,13 @@ Status FinishScan(const std::string& what, const ReadOptions& options, Organized
   if (scan->size() == 0 || scan->CountValid() == 0) {
     return Status::Error(what + ": no valid points");
   }
+  const CameraInfo& camera = options.camera;
+  if (options.estimate_lattice && !scan->organized() && !camera.empty()) {
+    OrganizedScan grid;
+    EDGEFIT_RETURN_IF_ERROR(GridOnCamera(what, camera, *scan, &grid));
+    *scan = std::move(grid);
+  }
   if (options.estimate_lattice && scan->organized()) {
-    const CameraInfo& camera = options.camera;
     if (!camera.empty()) {
       if (camera.width != scan->cols() || camera.height != scan->rows()) {
         return Status::Error(what + ": the grid is " + std::to_string(scan->cols()) + " x " +

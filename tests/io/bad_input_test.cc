@@ -32,6 +32,13 @@ std::string ReplaceLine(std::string text, int line, const std::string& replaceme
   return text.replace(begin, end - begin, replacement);
 }
 
+// A little-endian uint32, as PCD's binary_compressed sizes are written.
+std::string U32(uint32_t v) {
+  std::string bytes(4, '\0');
+  for (size_t i = 0; i < 4; ++i) bytes[i] = static_cast<char>((v >> (8 * i)) & 255u);
+  return bytes;
+}
+
 struct BadCase {
   const char* name;
   const char* extension;
@@ -71,7 +78,21 @@ std::vector<BadCase> Cases() {
        "scan 1: no valid points"},
       {"PtxTooSparseForLattice", "ptx", good_ptx, "scan 1: too few valid points to estimate the lattice"},
       {"PtxSecondScanBroken", "ptx", good_ptx + "2\n3\n0 0 0\n", "line 20: file ends inside a scan header"},
-      {"PcdBinaryCompressed", "pcd", pcd_header + "DATA binary_compressed\n", "binary_compressed is unsupported"},
+      {"PcdCompressedNoSizes", "pcd", pcd_header + "DATA binary_compressed\n" + U32(24),
+       "ends before its two sizes"},
+      {"PcdCompressedWrongSize", "pcd", pcd_header + "DATA binary_compressed\n" + U32(10) + U32(99),
+       "holds 99 bytes, but 2 points of 12 bytes need 24"},
+      {"PcdCompressedTruncated", "pcd",
+       pcd_header + "DATA binary_compressed\n" + U32(50) + U32(24) + std::string(10, '\0'),
+       "promises 50 compressed bytes but only 10 follow"},
+      {"PcdCompressedHugeClaim", "pcd",
+       "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 100000\nHEIGHT 1000\nDATA binary_compressed\n" +
+           U32(2) + U32(1200000000) + std::string(2, '\0'),
+       "corrupt sizes"},
+      // A back reference before any byte was written.
+      {"PcdCompressedCorrupt", "pcd",
+       pcd_header + "DATA binary_compressed\n" + U32(3) + U32(24) + "\xe0\xff\xff",
+       "corrupt LZF stream"},
       {"PcdNoData", "pcd", pcd_header, "no DATA line"},
       {"PcdEmpty", "pcd", "", "no DATA line"},
       {"PcdNoZ", "pcd", "FIELDS x y\nSIZE 4 4\nTYPE F F\nWIDTH 1\nHEIGHT 1\nDATA ascii\n1 2\n", "FIELDS must include x y z"},

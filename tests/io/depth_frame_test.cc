@@ -1,6 +1,7 @@
 // A depth camera's frame: the ROS camera_info YAML (both layouts), the
 // 16-bit depth PNG with it, the organized PCD in the camera's optical frame
-// read with its camera; each bad input fails with one line naming the file.
+// read with its camera, a point list put back on its grid; each bad input
+// fails with one line naming the file.
 #include <gtest/gtest.h>
 #include <png.h>
 
@@ -12,6 +13,7 @@
 
 #include "edgefit/io/camera_info.h"
 #include "edgefit/io/pcd.h"
+#include "edgefit/io/ply.h"
 #include "edgefit/io/scan_io.h"
 
 namespace edgefit {
@@ -186,6 +188,53 @@ TEST_F(DepthFrameTest, OrganizedPcdTakesItsCamerasLattice) {
   const Status status = ReadScans(path, other, &none);
   ASSERT_FALSE(status.ok());
   EXPECT_NE(status.message().find("camera_info.yaml"), std::string::npos) << status.message();
+}
+
+// A frame written as a point list (the pixels without a depth dropped, as a
+// RealSense .ply or Open3D's clouds are): read with its camera, every point
+// is back on its pixel; read with other intrinsics, refused.
+TEST_F(DepthFrameTest, PointListReturnsToItsCamerasGrid) {
+  for (const double k1 : {0.0, -0.2}) {  // a pinhole, and a lens with barrel distortion
+    ReadOptions with_camera;
+    ASSERT_TRUE(ReadCameraInfo(Write("camera_info.yaml", kRos2Info), &with_camera.camera).ok());
+    with_camera.camera.camera.distortion[0] = k1;
+    OrganizedScan frame(4, 6);
+    frame.set_file_order(OrganizedScan::FileOrder::kRowMajor);
+    for (int v = 0; v < 4; ++v) {
+      for (int u = 0; u < 6; ++u) {
+        if (u == 2 && v == 1) continue;  // no depth there
+        const Eigen::Vector3d p = (2.0 + 0.1 * u) * with_camera.camera.camera.Ray(u, v);
+        frame.SetPoint(frame.Index(v, u), p.cast<float>(), 0.25f * u);
+      }
+    }
+    ScanSet list;
+    list.scans.push_back(frame);
+    const std::string path = (dir_ / "frame.ply").string();
+    ASSERT_TRUE(WritePly(path, list, WriteOptions()).ok());
+    ScanSet scans;
+    const Status status = ReadScans(path, with_camera, &scans);
+    ASSERT_TRUE(status.ok()) << status.message();
+    const OrganizedScan& grid = scans.scans[0];
+    ASSERT_TRUE(grid.organized());
+    ASSERT_EQ(grid.rows(), 4);
+    ASSERT_EQ(grid.cols(), 6);
+    EXPECT_EQ(grid.lattice().model(), ScanLattice::Model::kProjective);
+    EXPECT_FALSE(grid.IsValid(grid.Index(1, 2)));
+    for (int v = 0; v < 4; ++v) {
+      for (int u = 0; u < 6; ++u) {
+        const size_t i = frame.Index(v, u);
+        if (!frame.IsValid(i)) continue;
+        EXPECT_LT((grid.point_scanner(i) - frame.point_scanner(i)).norm(), 1e-6) << v << " " << u;
+      }
+    }
+    ReadOptions other = with_camera;
+    other.camera.camera.fx = 510.0;
+    ScanSet none;
+    const Status refused = ReadScans(path, other, &none);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.message().rfind(path + ": ", 0), 0u) << refused.message();
+    EXPECT_NE(refused.message().find("not a frame of the camera"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -1,8 +1,12 @@
 #include <gtest/gtest.h>
+#include <lzf.h>
 
 #include <Eigen/Geometry>
 #include <cstdio>
+#include <cstring>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/pcd.h"
@@ -68,6 +72,68 @@ INSTANTIATE_TEST_SUITE_P(AsciiBinaryColour, PcdRoundTripTest,
                            return std::string(std::get<0>(info.param) ? "Binary" : "Ascii") +
                                   (std::get<1>(info.param) ? "Rgb" : "NoRgb");
                          });
+
+// A binary PCD rewritten as PCL's binary_compressed: each field's values for
+// every point in turn, LZF-compressed after the compressed and uncompressed
+// sizes (little endian).
+std::string BinaryCompressed(const std::string& binary) {
+  const size_t data = binary.find("DATA binary\n");
+  const size_t payload = data + std::string("DATA binary\n").size();
+  std::vector<size_t> bytes;  // per field: SIZE x COUNT
+  auto numbers = [&](const char* key) {
+    std::vector<size_t> v;
+    const size_t line = binary.find(std::string("\n") + key + " ");
+    if (line == std::string::npos || line > data) return v;
+    const size_t begin = line + 2 + std::strlen(key);
+    std::istringstream in(binary.substr(begin, binary.find('\n', begin) - begin));
+    for (size_t x; in >> x;) v.push_back(x);
+    return v;
+  };
+  const std::vector<size_t> sizes = numbers("SIZE"), counts = numbers("COUNT");
+  size_t record = 0;
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    bytes.push_back(sizes[i] * (counts.empty() ? 1 : counts[i]));
+    record += bytes.back();
+  }
+  const size_t n = (binary.size() - payload) / record;
+  std::string fields;
+  for (size_t f = 0, offset = 0; f < bytes.size(); offset += bytes[f++]) {
+    for (size_t p = 0; p < n; ++p) fields += binary.substr(payload + p * record + offset, bytes[f]);
+  }
+  std::string compressed(fields.size() + 64, '\0');
+  const unsigned size = lzf_compress(fields.data(), static_cast<unsigned>(fields.size()),
+                                     compressed.data(), static_cast<unsigned>(compressed.size()));
+  EXPECT_GT(size, 0u);
+  compressed.resize(size);
+  std::string out = binary.substr(0, data) + "DATA binary_compressed\n";
+  for (const uint32_t v : {static_cast<uint32_t>(size), static_cast<uint32_t>(fields.size())}) {
+    for (int i = 0; i < 4; ++i) out += static_cast<char>((v >> (8 * i)) & 255u);
+  }
+  return out + compressed;
+}
+
+TEST(PcdTest, BinaryCompressedReadsAsBinary) {
+  for (const bool color : {false, true}) {
+    ScanSet original;
+    original.scans.push_back(Sample(color));
+    WriteOptions write;
+    write.binary = true;
+    const std::string path = TempPath(std::string("compressed_") + (color ? "c" : "") + ".pcd");
+    ASSERT_TRUE(WriteScans(path, original, write).ok());
+    std::string binary;
+    ASSERT_TRUE(ReadFileToString(path, &binary).ok());
+    std::remove(path.c_str());
+    ScanSet plain, compressed;
+    ASSERT_TRUE(ParsePcd(binary, "plain.pcd", ReadOptions(), &plain).ok());
+    const std::string text = BinaryCompressed(binary);
+    ASSERT_NE(text.find("DATA binary_compressed\n"), std::string::npos);
+    const Status status = ParsePcd(text, "compressed.pcd", ReadOptions(), &compressed);
+    ASSERT_TRUE(status.ok()) << status.message();
+    EXPECT_TRUE(compressed.scans[0].organized());
+    EXPECT_GT(compressed.scans[0].CountValid(), 0u);
+    ExpectSameScan(plain.scans[0], compressed.scans[0]);
+  }
+}
 
 TEST(PcdTest, ReadsPclStyleHeaderAndExtraFields) {
   // PCL writes rgb as a float field and prints its bits as an integer in ascii.

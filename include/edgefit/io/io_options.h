@@ -15,7 +15,9 @@ struct ReadOptions {
   // A depth camera's intrinsics (a ROS camera_info file): a depth PNG needs
   // them; an organized scan read with them takes their projective lattice
   // instead of one estimated from its points (its grid must be the
-  // camera's width x height). Empty: none.
+  // camera's width x height); a point list read with them (a frame whose
+  // pixels without a depth were dropped) is put back on the camera's pixel
+  // grid, each point on the pixel it projects to. Empty: none.
   CameraInfo camera;
   // Depth PNG: metres per unit of its 16-bit values (ROS: millimetres).
   double depth_scale = 0.001;

@@ -5,7 +5,8 @@
 // points are in the scanner frame, as PCL keeps them; NaN = missing.
 // HEIGHT == 1 reads as an unorganized 1 x N cloud. FIELDS must hold x y z;
 // intensity and rgb / rgba (packed 0x00RRGGBB) are used when present, other
-// fields skipped. DATA ascii and binary; binary_compressed is refused.
+// fields skipped. DATA ascii, binary and binary_compressed (PCL's LZF layout,
+// field by field).
 #ifndef EDGEFIT_IO_PCD_H_
 #define EDGEFIT_IO_PCD_H_
 
