@@ -2,7 +2,7 @@ if(TARGET edgefit)
   edgefit_add_test(cli_test SOURCES tools/cli_test.cc tools/scan_cli_test.cc
                    tools/edges_cli_test.cc tools/fit_cli_test.cc tools/batch_cli_test.cc
                    tools/bench_cli_test.cc tools/bad_input_cli_test.cc tools/cell_cli_test.cc
-                   tools/report_cli_test.cc
+                   tools/report_cli_test.cc tools/world_cli_test.cc
                    LIBS nlohmann_json::nlohmann_json)
   target_compile_definitions(cli_test PRIVATE EDGEFIT_BINARY="$<TARGET_FILE:edgefit>")
   add_dependencies(cli_test edgefit)

@@ -15,6 +15,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common_flags.h"
+#include "fit_result_file.h"
 #include "edgefit/bench/fit_errors.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/core/file_path.h"
@@ -29,7 +30,6 @@
 DEFINE_string(models, "",
               "cell: the models to look for, a JSON file {\"models\": [{\"name\", \"urdf\", "
               "\"attach\", \"kind\", \"count\": N or \"every\"}]} (paths relative to it).");
-DEFINE_string(out_dir, "", "cell: a folder for one result JSON per instance (NAME_K.json).");
 DECLARE_string(out_background);
 DECLARE_double(background_distance_mm);
 
@@ -164,6 +164,7 @@ int RunCell(const Command& command) {
     const std::string id = l.name + "_" + std::to_string(instance.index);
     json result = FitResultJson(l.model, l.kind,
                                 models[static_cast<size_t>(instance.model)].options, instance.fit);
+    result["inputs"] = FitInputsJson(l.urdf, l.specs, SplitList(FLAGS_scan), nullptr);
     json summary = {{"id", id},
                     {"model", l.name},
                     {"ok", instance.fit.ok},

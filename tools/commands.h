@@ -15,6 +15,7 @@ Command BatchCommand();
 Command BenchCommand();
 Command CellCommand();
 Command ReportCommand();
+Command WorldCommand();
 
 }  // namespace edgefit::tools
 

@@ -4,6 +4,12 @@
 #include "edgefit/io/scan_io.h"
 #include "edgefit/scanner/asset_scan.h"
 
+DEFINE_string(result, "",
+              "report: result.json of edgefit fit; world: the result.json files of edgefit fit, "
+              "one per machine (comma list).");
+DEFINE_string(out_dir, "",
+              "cell: a folder for one result JSON per instance (NAME_K.json); world: the folder "
+              "to write (replaced whole when it exists).");
 DEFINE_string(scan, "",
               "Scan file(s): .ptx, .pcd, .ply or .e57, or a depth camera's 16-bit depth .png "
               "(with --camera_info); several as a comma list.");

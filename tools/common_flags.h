@@ -30,6 +30,8 @@ DECLARE_double(noise_mm);
 DECLARE_string(beam);
 DECLARE_bool(jackets);
 DECLARE_string(joints);
+DECLARE_string(result);
+DECLARE_string(out_dir);
 
 namespace edgefit {
 struct AssetScanOptions;

@@ -22,6 +22,7 @@ const std::vector<Command>& AllCommands() {
       FitCommand(),
       ReportCommand(),
       CellCommand(),
+      WorldCommand(),
       BatchCommand(),
       BenchCommand(),
   };

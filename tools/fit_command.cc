@@ -37,6 +37,7 @@
 #include "edgefit/report/fit_report.h"
 #include "edgefit/scanner/truth.h"
 #include "fit_flags.h"
+#include "fit_result_file.h"
 
 DEFINE_string(joint_states, "",
               "Known joints from a ROS joint_states YAML file (name and position lists, as "
@@ -73,49 +74,17 @@ std::vector<std::string> JointVerdictNotes(const KinematicModel& model, const Fi
   return notes;
 }
 
-std::string JointStatesYaml(const KinematicModel& model, const std::vector<double>& q,
-                            const std::vector<std::string>& notes) {
-  std::ostringstream names, positions, verdicts;
-  bool first = true;
+std::string FittedJointStates(const KinematicModel& model, const std::vector<double>& q,
+                              const std::vector<std::string>& notes) {
+  std::vector<std::pair<std::string, double>> values;
+  std::string verdicts;
   for (size_t j = 0; j < model.joints().size(); ++j) {
     if (!model.joints()[j].IsMoving()) continue;
-    names << (first ? "" : ", ") << model.joints()[j].name;
-    char value[32];
-    std::snprintf(value, sizeof(value), "%.9g", q[j]);
-    positions << (first ? "" : ", ") << value;
-    if (!notes[j].empty()) verdicts << " " << model.joints()[j].name << "=" << notes[j];
-    first = false;
+    values.emplace_back(model.joints()[j].name, q[j]);
+    if (!notes[j].empty()) verdicts += " " + model.joints()[j].name + "=" + notes[j];
   }
-  return "# edgefit fit: sensor_msgs/JointState (radians, metres)\n# verdicts:" + verdicts.str() +
-         " (result.json joint_status)\nname: [" + names.str() + "]\nposition: [" +
-         positions.str() + "]\nvelocity: []\neffort: []\n";
-}
-
-// What the fit read, as absolute paths: enough for `edgefit report` to
-// load the model and the scans again.
-json FitInputsJson(const std::vector<AttachSpec>& specs, const Eigen::AlignedBox3d* roi) {
-  namespace fs = std::filesystem;
-  json attach = json::array();
-  for (const AttachSpec& a : specs) {
-    std::string spec = fs::absolute(a.path).string() + "@" + a.parent_link;
-    if (!a.T_parent_root.isApprox(Pose::Identity())) {
-      const Eigen::Vector3d t = a.T_parent_root.translation();
-      const Eigen::Vector3d rpy = RpyFromRotation(a.T_parent_root.linear());
-      char pose[200];
-      std::snprintf(pose, sizeof(pose), ":%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", t.x(), t.y(),
-                    t.z(), rpy.x(), rpy.y(), rpy.z());
-      spec += pose;
-    }
-    attach.push_back(spec);
-  }
-  json scan = json::array();
-  for (const std::string& path : SplitList(FLAGS_scan)) scan.push_back(fs::absolute(path).string());
-  json inputs = {{"urdf", fs::absolute(FLAGS_urdf).string()}, {"attach", attach}, {"scan", scan}};
-  if (roi != nullptr) {
-    inputs["roi"] = {roi->min().x(), roi->min().y(), roi->min().z(),
-                     roi->max().x(), roi->max().y(), roi->max().z()};
-  }
-  return inputs;
+  return JointStatesYaml(values, "edgefit fit: sensor_msgs/JointState (radians, metres)\nverdicts:" +
+                                     verdicts + " (result.json joint_status)");
 }
 
 // --joint_states and --joints: the joints held at given values.
@@ -206,7 +175,7 @@ int RunFit(const Command& command) {
 
   json result = FitResultJson(model, kind, options, fit);
   result["timing_s"]["load"] = load_seconds;
-  result["inputs"] = FitInputsJson(specs, has_roi ? &roi : nullptr);
+  result["inputs"] = FitInputsJson(FLAGS_urdf, specs, SplitList(FLAGS_scan), has_roi ? &roi : nullptr);
   if (scored_asset >= 0) {
     result["errors"] = FitErrorsJson(errors);
     if (truth.size() > 1) {
@@ -223,7 +192,7 @@ int RunFit(const Command& command) {
   };
   if (!FLAGS_out_joint_states.empty()) {
     const Status status =
-        WriteStringAtomically(FLAGS_out_joint_states, JointStatesYaml(model, fit.q, notes));
+        WriteStringAtomically(FLAGS_out_joint_states, FittedJointStates(model, fit.q, notes));
     if (!status.ok()) return fail(status);
     written.push_back(FLAGS_out_joint_states);
   }

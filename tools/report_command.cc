@@ -12,13 +12,10 @@
 #include "common_flags.h"
 #include "edgefit/bench/bench_tables.h"
 #include "edgefit/core/atomic_file.h"
-#include "edgefit/core/pose_json.h"
 #include "edgefit/io/scan_io.h"
-#include "edgefit/model/composition.h"
-#include "edgefit/model/urdf_loader.h"
 #include "edgefit/report/fit_report.h"
+#include "fit_result_file.h"
 
-DEFINE_string(result, "", "report: result.json of edgefit fit.");
 DEFINE_string(bench, "",
               "report: the runs of edgefit bench (its --out_json); several files (the shards "
               "of one bench) as a comma list.");
@@ -28,49 +25,15 @@ namespace {
 
 using nlohmann::json;
 
-// PoseFromJson with an error naming where.
-Status PoseFromRows(const json& rows, const std::string& what, Pose* T) {
-  return PoseFromJson(rows, T) ? Status::Ok()
-                               : Status::Error(what + ": not a 4 x 4 rigid transform");
-}
-
 // The fit's model, joint values, base and station corrections from result.json.
 Status ReadFit(const json& result, const std::string& path, KinematicModel* model,
                std::vector<double>* q, Pose* T_world_base, std::vector<Pose>* corrections,
                std::vector<std::string>* scans) {
-  if (!result.is_object() || !result.contains("inputs") || !result.contains("joints") ||
-      !result.contains("base")) {
-    return Status::Error(path + ": not a result.json of edgefit fit with its inputs "
-                                "(\"inputs\", \"joints\", \"base\")");
-  }
+  EDGEFIT_RETURN_IF_ERROR(ReadFittedModel(result, path, model, q, T_world_base));
   const json& inputs = result["inputs"];
-  if (!inputs.contains("urdf") || !inputs["urdf"].is_string() || !inputs.contains("scan") ||
-      !inputs["scan"].is_array() || inputs["scan"].empty()) {
-    return Status::Error(path + ": inputs.urdf or inputs.scan missing");
+  if (!inputs.contains("scan") || !inputs["scan"].is_array() || inputs["scan"].empty()) {
+    return Status::Error(path + ": inputs.scan missing");
   }
-  std::string attach;
-  for (const json& a : inputs.value("attach", json::array())) {
-    if (!a.is_string()) return Status::Error(path + ": inputs.attach holds a non-string");
-    attach += (attach.empty() ? "" : ",") + a.get<std::string>();
-  }
-  std::vector<AttachSpec> specs;
-  EDGEFIT_RETURN_IF_ERROR(ParseAttachSpecList(attach, &specs));
-  EDGEFIT_RETURN_IF_ERROR(
-      LoadModelWithAttachments(inputs["urdf"].get<std::string>(), specs, ModelLoadOptions(), model));
-  q->assign(model->joints().size(), 0.0);
-  for (size_t j = 0; j < model->joints().size(); ++j) {
-    const Joint& joint = model->joints()[j];
-    if (!joint.IsMoving()) continue;
-    const json& v = result["joints"].value(joint.name, json());
-    if (!v.is_number()) {
-      return Status::Error(path + ": joint '" + joint.name + "' of " +
-                           inputs["urdf"].get<std::string>() + " has no value");
-    }
-    (*q)[j] = v.get<double>();
-  }
-  EDGEFIT_RETURN_IF_ERROR(
-      PoseFromRows(result["base"].value("T_world_base", json()), path + ": base.T_world_base",
-                   T_world_base));
   corrections->clear();
   if (result.contains("stations") && result["stations"].value("aligned", false)) {
     for (const json& c : result["stations"].value("corrections", json::array())) {

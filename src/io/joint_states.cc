@@ -3,6 +3,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 
 #include "yaml_file.h"
 
@@ -32,6 +34,21 @@ Status Parse(const YAML::Node& root, std::vector<std::pair<std::string, double>>
 Status ReadJointStates(const std::string& path,
                        std::vector<std::pair<std::string, double>>* values) {
   return ReadYamlFile(path, "a joint_states YAML file", Parse, values);
+}
+
+std::string JointStatesYaml(const std::vector<std::pair<std::string, double>>& values,
+                            const std::string& comment) {
+  std::string text;
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);) text += "# " + line + "\n";
+  std::string names, positions;
+  for (const auto& [name, value] : values) {
+    char number[32];
+    std::snprintf(number, sizeof(number), "%.9g", value);
+    names += (names.empty() ? "" : ", ") + name;
+    positions += (positions.empty() ? "" : ", ") + std::string(number);
+  }
+  return text + "name: [" + names + "]\nposition: [" + positions + "]\nvelocity: []\neffort: []\n";
 }
 
 }  // namespace edgefit

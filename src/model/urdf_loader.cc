@@ -196,6 +196,10 @@ Status ParseModel(const std::string& xml, const std::string& urdf_path,
       if (!(axis.norm() > 1e-12)) return Status::Error(where + ": zero axis");
       joint.axis = axis.normalized();  // URDF does not require a unit axis.
     }
+    if (joint.IsMoving() && u->limits != nullptr) {
+      joint.effort = u->limits->effort;
+      joint.velocity = u->limits->velocity;
+    }
     if ((joint.type == JointType::kRevolute || joint.type == JointType::kPrismatic) &&
         u->limits != nullptr) {
       joint.has_limits = true;

@@ -84,6 +84,12 @@ TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
   EXPECT_EQ(nlohmann::json::parse(rest.out)["total_valid"].get<size_t>(),
             r["background"]["points"].get<size_t>());
   EXPECT_GT(r["background"]["removed_points"].get<size_t>(), 20000u);
+  // The instances' results (their inputs name the model) make a world.
+  const RunResult world =
+      Run("world --result=" + r["instances"][0]["result"].get<std::string>() + "," +
+          r["instances"][1]["result"].get<std::string>() + " --name=a,b --out_dir=" + Path("world"));
+  ASSERT_EQ(world.exit_code, 0) << world.err;
+  EXPECT_NE(Slurp(Path("world/cell.urdf")).find("<joint name=\"world_to_b\""), std::string::npos);
 }
 
 // --roi: the arms are looked for in the box around "a" only; "b" stays in

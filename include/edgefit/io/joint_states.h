@@ -19,6 +19,12 @@ namespace edgefit {
 Status ReadJointStates(const std::string& path,
                        std::vector<std::pair<std::string, double>>* values);
 
+// The text ReadJointStates reads: `# <comment>` lines (one per line of
+// `comment`), then name and position lists ("%.9g") and empty velocity and
+// effort lists.
+std::string JointStatesYaml(const std::vector<std::pair<std::string, double>>& values,
+                            const std::string& comment);
+
 }  // namespace edgefit
 
 #endif  // EDGEFIT_IO_JOINT_STATES_H_

@@ -31,6 +31,10 @@ struct Joint {
   bool has_limits = false;  // false for continuous and fixed
   double lower = 0.0;       // [rad] or [m]
   double upper = 0.0;
+  // URDF <limit> effort [N m] or [N] and velocity [rad/s] or [m/s]: not
+  // used by the fit, carried to the files written from the model.
+  double effort = 0.0;
+  double velocity = 0.0;
   // URDF <mimic>: q = multiplier * q[mimic_joint] + offset.
   int mimic_joint = -1;
   double mimic_multiplier = 1.0;

@@ -1,0 +1,57 @@
+// The fitted cell as a world that motion planners load (`edgefit world`):
+// every fitted machine, placed where the fit found it, in files that
+// urdfdom (check_urdf, RViz, MoveIt), DART and pybullet read. Written into
+// one folder, whole or not at all:
+//   cell.urdf                 a root link "world"; each machine's links and
+//                             joints prefixed "<name>_"; a fixed joint
+//                             "world_to_<name>" at its fitted base; joints
+//                             with their limits (effort and velocity as the
+//                             machine's URDF gives them) and mimics; each
+//                             link's mesh as meshes/<name>_<link>.stl in its
+//                             link frame, referenced relative to the URDF,
+//                             as its visual and its collision;
+//   cell_frozen.urdf          the same with every joint fixed at its fitted
+//                             value (for consumers that cannot set joints);
+//   cell.srdf                 a group per machine (its moving joints), a
+//                             group_state "as_scanned" with the fitted
+//                             values, and collisions disabled between links
+//                             joined by a joint ("Adjacent");
+//   joint_states.yaml         sensor_msgs/JointState of every machine's
+//                             moving joints (prefixed names), as fitted;
+//   machines_as_scanned.ply   every machine's meshes posed at the fitted
+//                             values, world frame, metres.
+// A link's mesh is the surface edgefit fitted: its URDF's visual geometry
+// (KinematicModel's Link::mesh), attachments included. Links without a mesh
+// are frames.
+#ifndef EDGEFIT_WORLD_PLANNING_WORLD_H_
+#define EDGEFIT_WORLD_PLANNING_WORLD_H_
+
+#include <string>
+#include <vector>
+
+#include "edgefit/core/pose.h"
+#include "edgefit/core/status.h"
+#include "edgefit/model/kinematic_model.h"
+
+namespace edgefit {
+
+struct WorldMachine {
+  std::string name;                     // instance name: letters, digits, '_' and '-'
+  const KinematicModel* model = nullptr;  // loaded with its attachments
+  Pose T_world_base = Pose::Identity();   // the fitted base (root link) pose
+  std::vector<double> q;                  // the fitted values, model order
+  std::string source;                     // where it came from (a result.json), for messages
+};
+
+// Writes the files above into `folder`: first into a temporary folder
+// beside it, which then takes its place (an existing `folder` is replaced
+// only when every file was written). *written (may be null): the files, in
+// order. Fails with one line (nothing written) for no machines, a name
+// that is empty, repeated or not of the allowed characters, or q of the
+// wrong size or not finite.
+Status WritePlanningWorld(const std::vector<WorldMachine>& machines, const std::string& folder,
+                          std::vector<std::string>* written);
+
+}  // namespace edgefit
+
+#endif  // EDGEFIT_WORLD_PLANNING_WORLD_H_

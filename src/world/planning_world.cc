@@ -1,0 +1,240 @@
+#include "edgefit/world/planning_world.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <system_error>
+#include <utility>
+
+#include "edgefit/assets/stl_writer.h"
+#include "edgefit/assets/urdf_writer.h"
+#include "edgefit/core/atomic_file.h"
+#include "edgefit/io/joint_states.h"
+#include "edgefit/model/loop_closure.h"
+#include "edgefit/model/mesh_ply.h"
+
+namespace edgefit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kGenerator[] = "edgefit world (src/world)";
+
+Status CheckMachines(const std::vector<WorldMachine>& machines) {
+  if (machines.empty()) return Status::Error("world: no machines");
+  std::set<std::string> names;
+  for (const WorldMachine& m : machines) {
+    const std::string where = m.source.empty() ? "world: machine '" + m.name + "'" : m.source;
+    if (m.model == nullptr) return Status::Error(where + ": no model");
+    if (m.name.empty()) return Status::Error(where + ": an empty machine name");
+    for (const char c : m.name) {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') {
+        return Status::Error(where + ": machine name '" + m.name +
+                             "' may hold only letters, digits, '_' and '-'");
+      }
+    }
+    if (!names.insert(m.name).second) {
+      return Status::Error(where + ": machine name '" + m.name + "' is given twice");
+    }
+    if (m.q.size() != m.model->joints().size()) {
+      return Status::Error(where + ": " + std::to_string(m.q.size()) + " joint values for " +
+                           std::to_string(m.model->joints().size()) + " joints");
+    }
+    for (const double v : m.q) {
+      if (!std::isfinite(v)) return Status::Error(where + ": a joint value is not finite");
+    }
+    if (!m.T_world_base.matrix().allFinite()) {
+      return Status::Error(where + ": the base pose is not finite");
+    }
+  }
+  return Status::Ok();
+}
+
+// A file name for a link's mesh: the prefixed name, other characters '_'.
+std::string MeshFile(const std::string& prefixed_link) {
+  std::string file = prefixed_link;
+  for (char& c : file) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.') c = '_';
+  }
+  return "meshes/" + file + ".stl";
+}
+
+// cell.urdf (frozen: every joint fixed at its fitted value).
+std::string CellUrdf(const std::vector<WorldMachine>& machines, bool frozen) {
+  UrdfWriter urdf("cell",
+                  frozen ? "every joint fixed at the value edgefit fitted"
+                         : "the fitted machines; joint values in joint_states.yaml and cell.srdf",
+                  kGenerator);
+  urdf.AddLink("world", "");
+  for (const WorldMachine& m : machines) {
+    const KinematicModel& model = *m.model;
+    const std::string prefix = m.name + "_";
+    for (const Link& link : model.links()) {
+      urdf.AddLink(prefix + link.name, link.mesh.empty() ? "" : MeshFile(prefix + link.name),
+                   Eigen::Vector4d(0.7, 0.7, 0.7, 1.0), /*collision=*/true);
+    }
+    UrdfJointSpec base;
+    base.name = "world_to_" + m.name;
+    base.parent = "world";
+    base.child = prefix + model.links()[static_cast<size_t>(model.root_link())].name;
+    base.T_parent_joint = m.T_world_base;
+    urdf.AddJoint(base);
+    for (size_t j = 0; j < model.joints().size(); ++j) {
+      const Joint& joint = model.joints()[j];
+      UrdfJointSpec spec;
+      spec.name = prefix + joint.name;
+      spec.parent = prefix + model.links()[static_cast<size_t>(joint.parent_link)].name;
+      spec.child = prefix + model.links()[static_cast<size_t>(joint.child_link)].name;
+      if (frozen) {
+        spec.T_parent_joint = joint.T_parent_child(m.q[j]);
+      } else {
+        spec.type = joint.type;
+        spec.T_parent_joint = joint.T_parent_joint;
+        spec.axis = joint.axis;
+        spec.lower = joint.lower;
+        spec.upper = joint.upper;
+        spec.effort = joint.effort;
+        spec.velocity = joint.velocity;
+        if (joint.mimic_joint >= 0) {
+          spec.mimic = prefix + model.joints()[static_cast<size_t>(joint.mimic_joint)].name;
+          spec.mimic_multiplier = joint.mimic_multiplier;
+          spec.mimic_offset = joint.mimic_offset;
+        }
+      }
+      urdf.AddJoint(spec);
+    }
+    if (frozen) continue;
+    for (const LoopClosure& closure : model.loop_closures()) {
+      LoopClosureSpec spec;
+      spec.name = prefix + closure.name;
+      spec.link_a = prefix + model.links()[static_cast<size_t>(closure.link_a)].name;
+      spec.link_b = prefix + model.links()[static_cast<size_t>(closure.link_b)].name;
+      spec.p_link_a = closure.p_link_a;
+      spec.p_link_b = closure.p_link_b;
+      for (const int j : closure.joints) {
+        spec.joints.push_back(prefix + model.joints()[static_cast<size_t>(j)].name);
+      }
+      urdf.AddLoopClosure(spec);
+    }
+  }
+  return urdf.ToString();
+}
+
+std::string Number(double value) { return FormatUrdfNumber(value); }
+
+// cell.srdf: MoveIt's semantic description of cell.urdf.
+std::string CellSrdf(const std::vector<WorldMachine>& machines) {
+  std::ostringstream os;
+  os << "<?xml version=\"1.0\"?>\n<!-- Generated by " << kGenerator
+     << "; do not edit by hand. -->\n<robot name=\"cell\">\n";
+  for (const WorldMachine& m : machines) {
+    const std::string prefix = m.name + "_";
+    os << "  <group name=\"" << m.name << "\">\n";
+    for (const Joint& joint : m.model->joints()) {
+      os << "    <joint name=\"" << prefix << joint.name << "\"/>\n";
+    }
+    os << "  </group>\n";
+  }
+  for (const WorldMachine& m : machines) {
+    os << "  <group_state name=\"as_scanned\" group=\"" << m.name << "\">\n";
+    for (size_t j = 0; j < m.model->joints().size(); ++j) {
+      const Joint& joint = m.model->joints()[j];
+      if (!joint.IsIndependent()) continue;
+      os << "    <joint name=\"" << m.name << "_" << joint.name << "\" value=\"" << Number(m.q[j])
+         << "\"/>\n";
+    }
+    os << "  </group_state>\n";
+  }
+  for (const WorldMachine& m : machines) {
+    for (const Joint& joint : m.model->joints()) {
+      os << "  <disable_collisions link1=\"" << m.name << "_"
+         << m.model->links()[static_cast<size_t>(joint.parent_link)].name << "\" link2=\""
+         << m.name << "_" << m.model->links()[static_cast<size_t>(joint.child_link)].name
+         << "\" reason=\"Adjacent\"/>\n";
+    }
+  }
+  os << "</robot>\n";
+  return os.str();
+}
+
+std::string CellJointStates(const std::vector<WorldMachine>& machines) {
+  std::vector<std::pair<std::string, double>> values;
+  for (const WorldMachine& m : machines) {
+    for (size_t j = 0; j < m.model->joints().size(); ++j) {
+      if (m.model->joints()[j].IsMoving()) {
+        values.emplace_back(m.name + "_" + m.model->joints()[j].name, m.q[j]);
+      }
+    }
+  }
+  return JointStatesYaml(values, "edgefit world: sensor_msgs/JointState of cell.urdf as fitted "
+                                 "(radians, metres)");
+}
+
+// Every file into `dir`, which exists and is empty.
+Status WriteFiles(const std::vector<WorldMachine>& machines, const fs::path& dir,
+                  std::vector<std::string>* names) {
+  TriangleMesh as_scanned;
+  for (const WorldMachine& m : machines) {
+    const std::vector<Pose> T_world_link = m.model->ForwardKinematics(m.q, m.T_world_base);
+    for (size_t l = 0; l < m.model->links().size(); ++l) {
+      const Link& link = m.model->links()[l];
+      if (link.mesh.empty()) continue;
+      const std::string file = MeshFile(m.name + "_" + link.name);
+      EDGEFIT_RETURN_IF_ERROR(WriteBinaryStl((dir / file).string(), link.mesh, m.name + "_" + link.name));
+      names->push_back(file);
+      as_scanned.Append(link.mesh, T_world_link[l]);
+    }
+  }
+  const std::vector<std::pair<std::string, std::string>> texts = {
+      {"cell.urdf", CellUrdf(machines, false)},
+      {"cell_frozen.urdf", CellUrdf(machines, true)},
+      {"cell.srdf", CellSrdf(machines)},
+      {"joint_states.yaml", CellJointStates(machines)}};
+  for (const auto& [file, text] : texts) {
+    EDGEFIT_RETURN_IF_ERROR(WriteStringAtomically((dir / file).string(), text));
+    names->push_back(file);
+  }
+  EDGEFIT_RETURN_IF_ERROR(WriteMeshPly((dir / "machines_as_scanned.ply").string(), as_scanned,
+                                       "edgefit world: the machines as fitted, world frame"));
+  names->push_back("machines_as_scanned.ply");
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status WritePlanningWorld(const std::vector<WorldMachine>& machines, const std::string& folder,
+                          std::vector<std::string>* written) {
+  EDGEFIT_RETURN_IF_ERROR(CheckMachines(machines));
+  EDGEFIT_RETURN_IF_ERROR(CheckOutputFolder(folder));
+  const fs::path target = fs::absolute(folder).lexically_normal();
+  const std::string pid = std::to_string(::getpid());
+  const fs::path temporary = target.string() + ".tmp." + pid;
+  const fs::path old = target.string() + ".old." + pid;
+  std::error_code error;
+  fs::remove_all(temporary, error);
+  EDGEFIT_RETURN_IF_ERROR(CreateFolder((temporary / "meshes").string(), nullptr));
+  std::vector<std::string> names;
+  Status status = WriteFiles(machines, temporary, &names);
+  if (status.ok() && fs::exists(target)) {
+    fs::rename(target, old, error);
+    if (error) status = Status::Error(folder + ": cannot replace it: " + error.message());
+  }
+  if (status.ok()) {
+    fs::rename(temporary, target, error);
+    if (error) {
+      fs::rename(old, target, error);  // put the old folder back
+      status = Status::Error(folder + ": cannot write it: " + error.message());
+    }
+  }
+  fs::remove_all(status.ok() ? old : temporary, error);
+  if (!status.ok()) return status;
+  if (written != nullptr) {
+    for (const std::string& name : names) written->push_back((fs::path(folder) / name).string());
+  }
+  return Status::Ok();
+}
+
+}  // namespace edgefit

@@ -1,0 +1,63 @@
+// edgefit world from result.json files: the world folder written whole, a
+// machine per result named as asked; bad input one line, exit 2, nothing
+// written.
+#include <filesystem>
+#include <string>
+
+#include "tools/cli_fixture.h"
+
+namespace {
+
+using edgefit_cli_test::CliTest;
+using edgefit_cli_test::RunResult;
+using edgefit_cli_test::Slurp;
+namespace fs = std::filesystem;
+
+// A result.json as edgefit fit writes it, of the bundled robot.
+std::string Result(const std::string& joint_2, bool ok) {
+  return std::string("{\"inputs\": {\"urdf\": \"") + EDGEFIT_SOURCE_DIR +
+         "/assets/robot/robot.urdf\", \"attach\": [], \"scan\": []},\n"
+         "\"joints\": {\"joint_1\": 0.1, \"joint_2\": " + joint_2 +
+         ", \"joint_3\": 0.3, \"joint_4\": 0.4, \"joint_5\": 0.5, \"joint_6\": 0.6, "
+         "\"balancer_cylinder_joint\": 0, \"balancer_piston_joint\": 0},\n"
+         "\"base\": {\"T_world_base\": [[0, -1, 0, 3], [1, 0, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]},\n"
+         "\"quality\": {\"ok\": " + (ok ? "true" : "false") + ", \"message\": \"joint_6 is ambiguous\"}}\n";
+}
+
+TEST_F(CliTest, WorldFromTwoResults) {
+  const std::string left = Write("left.json", Result("0.2", true));
+  const std::string right = Write("right.json", Result("-0.2", false));
+  const RunResult r = Run("world --result=" + left + "," + right + " --name=left,right --out_dir=" +
+                          Path("world"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("right.json, 10 links, prefixed right_ (the fit said not ok: joint_6 is "
+                       "ambiguous; placed as fitted)"),
+            std::string::npos)
+      << r.out;
+  const std::string urdf = Slurp(Path("world/cell.urdf"));
+  EXPECT_NE(urdf.find("<joint name=\"world_to_left\" type=\"fixed\">"), std::string::npos);
+  EXPECT_NE(urdf.find("<joint name=\"right_joint_2\" type=\"revolute\">"), std::string::npos);
+  EXPECT_NE(urdf.find("<origin xyz=\"3 1 0\""), std::string::npos);  // the fitted base
+  const std::string states = Slurp(Path("world/joint_states.yaml"));
+  EXPECT_NE(states.find("left_joint_2, left_joint_3"), std::string::npos) << states;
+  EXPECT_NE(states.find("0.1, 0.2, 0.3"), std::string::npos) << states;
+  EXPECT_NE(states.find("0.1, -0.2, 0.3"), std::string::npos) << states;
+  EXPECT_TRUE(fs::exists(Path("world/meshes/left_link_1.stl")));
+  EXPECT_NE(Slurp(Path("world/cell.srdf")).find("<group_state name=\"as_scanned\" group=\"right\">"),
+            std::string::npos);
+
+  // Bad input: one line, exit 2, the folder as it was.
+  const std::string before = Slurp(Path("world/cell.urdf"));
+  ExpectBadInput("world --result=" + left + " --name=a,b --out_dir=" + Path("world"),
+                 "--name gives 2 names for 1 results");
+  ExpectBadInput("world --result=" + left + "," + left + " --out_dir=" + Path("world"),
+                 "left.json: machine name 'spot_welding_robot' is given twice");
+  Write("no_joint.json", Result("0.2", true).replace(Result("0.2", true).find("\"joint_3\""), 16, ""));
+  ExpectBadInput("world --result=" + Path("no_joint.json") + " --out_dir=" + Path("world"),
+                 "no_joint.json: joint 'joint_3'");
+  ExpectBadInput("world --result=" + Path("absent.json") + " --out_dir=" + Path("world"), "absent.json");
+  ExpectBadInput("world --result=" + left, "--out_dir is required");
+  EXPECT_EQ(Slurp(Path("world/cell.urdf")), before);
+}
+
+}  // namespace
