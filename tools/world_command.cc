@@ -1,7 +1,9 @@
 // edgefit world: the fitted machines as a world that motion planners load
 // (include/edgefit/world/planning_world.h says what is written).
-//   edgefit world --result=robot.json[,other.json] [--name=left[,right]] --out_dir=DIR
+//   edgefit world --result=robot.json[,other.json] [--name=left[,right]] [--scan=F,...]
+//                 [--voxel_mm=20] --out_dir=DIR
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -9,9 +11,15 @@
 #include "commands.h"
 #include "common_flags.h"
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/io/scan_io.h"
+#include "edgefit/pipeline/model_points.h"
 #include "edgefit/world/planning_world.h"
 #include "fit_result_file.h"
 
+DECLARE_double(background_distance_mm);
+DEFINE_double(voxel_mm, 20.0,
+              "world: the background's voxel [mm]: background.ply and background.bt hold the "
+              "occupied voxels of this edge.");
 DEFINE_string(name, "",
               "world: the machines' instance names, in --result's order (comma list); default: "
               "each URDF's robot name. Every link and joint of a machine is prefixed '<name>_'.");
@@ -25,6 +33,10 @@ int RunWorld(const Command& command) {
   const std::vector<std::string> results = SplitList(FLAGS_result);
   const std::vector<std::string> names = SplitList(FLAGS_name);
   if (results.empty()) return BadInput(command, "--result is required");
+  if (!(FLAGS_voxel_mm > 0.0)) return BadInput(command, "--voxel_mm must be > 0");
+  if (!(FLAGS_background_distance_mm > 0.0)) {
+    return BadInput(command, "--background_distance_mm must be > 0");
+  }
   if (FLAGS_out_dir.empty()) return BadInput(command, "--out_dir is required");
   if (!names.empty() && names.size() != results.size()) {
     return BadInput(command, "--name gives " + std::to_string(names.size()) + " names for " +
@@ -34,6 +46,7 @@ int RunWorld(const Command& command) {
   std::vector<KinematicModel> models(results.size());
   std::vector<WorldMachine> machines(results.size());
   std::vector<std::string> notes(results.size());
+  std::vector<std::string> scan_inputs;  // the scans the fits read
   for (size_t i = 0; i < results.size(); ++i) {
     std::string text;
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(results[i], &text));
@@ -45,22 +58,71 @@ int RunWorld(const Command& command) {
     m.model = &models[i];
     m.name = names.empty() ? models[i].name() : names[i];
     m.source = results[i];
+    for (const json& scan : result["inputs"].value("scan", json::array())) {
+      if (scan.is_string()) scan_inputs.push_back(scan.get<std::string>());
+    }
     const json& quality = result.value("quality", json::object());
     if (quality.is_object() && !quality.value("ok", true)) {
-      notes[i] = " (the fit said not ok: " + quality.value("message", std::string()) +
+      const std::string message = quality.value("message", std::string());
+      const size_t clause = message.find(';');
+      notes[i] = " (the fit said not ok: " +
+                 (clause == std::string::npos ? message : message.substr(0, clause) + "; ...") +
                  "; placed as fitted)";
     }
   }
+  // The background: the scans (--scan, else those the fits read) less every
+  // machine's points.
+  std::vector<std::string> scan_paths = SplitList(FLAGS_scan);
+  if (scan_paths.empty()) {
+    std::set<std::string> seen;
+    for (const std::string& path : scan_inputs) {
+      if (seen.insert(path).second) scan_paths.push_back(path);
+    }
+  }
+  std::vector<Eigen::Vector3f> background;
+  size_t removed = 0;
+  if (!scan_paths.empty()) {
+    ScanSet scans;
+    ReadOptions read;
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadOptionsFromFlags(&read));
+    for (const std::string& path : scan_paths) {
+      EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScans(path, read, &scans));
+    }
+    Progress("world: the background, " + std::to_string(scans.TotalValid()) + " points less " +
+             std::to_string(machines.size()) + " machines");
+    ModelPointsOptions removal;
+    removal.distance = FLAGS_background_distance_mm * 1e-3;
+    for (const WorldMachine& m : machines) {
+      std::vector<std::vector<uint8_t>> marks;
+      EDGEFIT_RETURN_IF_ERROR_EXIT(
+          command, MarkModelPoints(scans, *m.model, m.q, m.T_world_base, removal, &marks));
+      removed += RemoveMarkedPoints(marks, &scans);
+    }
+    for (const OrganizedScan& scan : scans.scans) {
+      for (size_t i = 0; i < scan.size(); ++i) {
+        if (scan.IsValid(i)) background.push_back(scan.PointWorld(i).cast<float>());
+      }
+    }
+  }
+  BackgroundOptions background_options;
+  background_options.voxel = FLAGS_voxel_mm * 1e-3;
   std::vector<std::string> written;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, WritePlanningWorld(machines, FLAGS_out_dir, &written));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(
+      command, WritePlanningWorld(machines, scan_paths.empty() ? nullptr : &background,
+                                  background_options, FLAGS_out_dir, &written));
   for (size_t i = 0; i < machines.size(); ++i) {
     const WorldMachine& m = machines[i];
     std::printf("%s: %s, %zu links, prefixed %s_%s\n", m.name.c_str(), m.source.c_str(),
                 m.model->links().size(), m.name.c_str(), notes[i].c_str());
   }
-  std::printf("world: %s (%zu files: cell.urdf, cell_frozen.urdf, cell.srdf, joint_states.yaml, "
-              "machines_as_scanned.ply, meshes/)\n",
-              FLAGS_out_dir.c_str(), written.size());
+  if (scan_paths.empty()) {
+    std::printf("background: none (no --scan, and the results name no scans)\n");
+  } else {
+    std::printf("background: %zu points (%zu of the machines removed, within %.1f mm of them) in "
+                "%.0f mm voxels: background.ply, background.bt\n",
+                background.size(), removed, FLAGS_background_distance_mm, FLAGS_voxel_mm);
+  }
+  std::printf("world: %s (%zu files)\n", FLAGS_out_dir.c_str(), written.size());
   return 0;
 }
 
@@ -70,14 +132,17 @@ Command WorldCommand() {
   return {"world",
           "the fitted machines as a world that motion planners load: cell.urdf (root 'world', "
           "each machine at its fitted base), cell_frozen.urdf, cell.srdf (as_scanned), "
-          "joint_states.yaml, machines_as_scanned.ply",
+          "joint_states.yaml, machines_as_scanned.ply, and the scan less the machines as "
+          "background.ply (closed voxel mesh) and background.bt (OctoMap)",
           "Usage:\n"
-          "  edgefit world --result=R.json[,R2.json] [--name=N[,N2]] --out_dir=DIR\n"
+          "  edgefit world --result=R.json[,R2.json] [--name=N[,N2]] [--scan=F,...] [--voxel_mm=20]\n"
+          "                [--background_distance_mm=8] [--camera_info=C.yaml] --out_dir=DIR\n"
           "Example:\n"
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
           "  edgefit world --result=result.json --name=robot --out_dir=world\n"
           "  check_urdf world/cell.urdf",
-          {"result", "name", "out_dir"},
+          {"result", "name", "scan", "camera_info", "depth_scale", "voxel_mm",
+           "background_distance_mm", "out_dir"},
           RunWorld};
 }
 

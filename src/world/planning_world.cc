@@ -174,7 +174,9 @@ std::string CellJointStates(const std::vector<WorldMachine>& machines) {
 }
 
 // Every file into `dir`, which exists and is empty.
-Status WriteFiles(const std::vector<WorldMachine>& machines, const fs::path& dir,
+Status WriteFiles(const std::vector<WorldMachine>& machines,
+                  const std::vector<Eigen::Vector3f>* background,
+                  const BackgroundOptions& background_options, const fs::path& dir,
                   std::vector<std::string>* names) {
   TriangleMesh as_scanned;
   for (const WorldMachine& m : machines) {
@@ -200,12 +202,15 @@ Status WriteFiles(const std::vector<WorldMachine>& machines, const fs::path& dir
   EDGEFIT_RETURN_IF_ERROR(WriteMeshPly((dir / "machines_as_scanned.ply").string(), as_scanned,
                                        "edgefit world: the machines as fitted, world frame"));
   names->push_back("machines_as_scanned.ply");
-  return Status::Ok();
+  if (background == nullptr) return Status::Ok();
+  return WriteBackground(*background, background_options, dir.string(), names);
 }
 
 }  // namespace
 
-Status WritePlanningWorld(const std::vector<WorldMachine>& machines, const std::string& folder,
+Status WritePlanningWorld(const std::vector<WorldMachine>& machines,
+                          const std::vector<Eigen::Vector3f>* background,
+                          const BackgroundOptions& background_options, const std::string& folder,
                           std::vector<std::string>* written) {
   EDGEFIT_RETURN_IF_ERROR(CheckMachines(machines));
   EDGEFIT_RETURN_IF_ERROR(CheckOutputFolder(folder));
@@ -217,7 +222,7 @@ Status WritePlanningWorld(const std::vector<WorldMachine>& machines, const std::
   fs::remove_all(temporary, error);
   EDGEFIT_RETURN_IF_ERROR(CreateFolder((temporary / "meshes").string(), nullptr));
   std::vector<std::string> names;
-  Status status = WriteFiles(machines, temporary, &names);
+  Status status = WriteFiles(machines, background, background_options, temporary, &names);
   if (status.ok() && fs::exists(target)) {
     fs::rename(target, old, error);
     if (error) status = Status::Error(folder + ": cannot replace it: " + error.message());

@@ -90,6 +90,9 @@ TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
           r["instances"][1]["result"].get<std::string>() + " --name=a,b --out_dir=" + Path("world"));
   ASSERT_EQ(world.exit_code, 0) << world.err;
   EXPECT_NE(Slurp(Path("world/cell.urdf")).find("<joint name=\"world_to_b\""), std::string::npos);
+  EXPECT_NE(world.out.find("background: "), std::string::npos) << world.out;  // the cell's scans
+  EXPECT_TRUE(fs::exists(Path("world/background.bt")));
+  EXPECT_TRUE(fs::exists(Path("world/background.ply")));
 }
 
 // --roi: the arms are looked for in the box around "a" only; "b" stays in

@@ -43,6 +43,8 @@ TEST_F(CliTest, WorldFromTwoResults) {
   EXPECT_NE(states.find("0.1, 0.2, 0.3"), std::string::npos) << states;
   EXPECT_NE(states.find("0.1, -0.2, 0.3"), std::string::npos) << states;
   EXPECT_TRUE(fs::exists(Path("world/meshes/left_link_1.stl")));
+  EXPECT_NE(r.out.find("background: none"), std::string::npos) << r.out;  // no scans named
+  EXPECT_FALSE(fs::exists(Path("world/background.bt")));
   EXPECT_NE(Slurp(Path("world/cell.srdf")).find("<group_state name=\"as_scanned\" group=\"right\">"),
             std::string::npos);
 

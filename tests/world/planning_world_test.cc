@@ -2,8 +2,11 @@
 // cell.urdf loaded again at joint_states.yaml's values, and cell_frozen.urdf
 // at its zero, place every link where the fitted model is; cell.srdf's
 // as_scanned holds the fitted values; check_urdf accepts both URDFs; the
-// folder is replaced whole, and left as it was when a write fails.
+// folder is replaced whole, and left as it was when a write fails. The
+// background's voxels: a closed surface around every point, and the same
+// cells occupied in the OctoMap tree.
 #include <gtest/gtest.h>
+#include <octomap/OcTree.h>
 #include <tinyxml2.h>
 
 #include <cstdlib>
@@ -76,7 +79,7 @@ class PlanningWorldTest : public ::testing::Test {
 TEST_F(PlanningWorldTest, PlacesEveryLinkWhereTheFitDid) {
   const fs::path world = dir_ / "world";
   std::vector<std::string> written;
-  const Status status = WritePlanningWorld({machine_}, world.string(), &written);
+  const Status status = WritePlanningWorld({machine_}, nullptr, BackgroundOptions(), world.string(), &written);
   ASSERT_TRUE(status.ok()) << status.message();
   for (const std::string& file : written) EXPECT_TRUE(fs::exists(file)) << file;
   for (const char* file : {"cell.urdf", "cell_frozen.urdf", "cell.srdf", "joint_states.yaml",
@@ -155,7 +158,7 @@ TEST_F(PlanningWorldTest, PlacesEveryLinkWhereTheFitDid) {
 
 TEST_F(PlanningWorldTest, ReplacesTheFolderWholeOrLeavesIt) {
   const fs::path world = dir_ / "world";
-  ASSERT_TRUE(WritePlanningWorld({machine_}, world.string(), nullptr).ok());
+  ASSERT_TRUE(WritePlanningWorld({machine_}, nullptr, BackgroundOptions(), world.string(), nullptr).ok());
   std::vector<std::pair<std::string, double>> before;
   ASSERT_TRUE(ReadJointStates((world / "joint_states.yaml").string(), &before).ok());
 
@@ -167,7 +170,7 @@ TEST_F(PlanningWorldTest, ReplacesTheFolderWholeOrLeavesIt) {
   for (const std::vector<WorldMachine>& machines :
        {std::vector<WorldMachine>{bad}, std::vector<WorldMachine>{slash},
         std::vector<WorldMachine>{machine_, twice}, std::vector<WorldMachine>{}}) {
-    const Status status = WritePlanningWorld(machines, world.string(), nullptr);
+    const Status status = WritePlanningWorld(machines, nullptr, BackgroundOptions(), world.string(), nullptr);
     EXPECT_FALSE(status.ok());
     EXPECT_EQ(status.message().find('\n'), std::string::npos) << status.message();
   }
@@ -177,12 +180,94 @@ TEST_F(PlanningWorldTest, ReplacesTheFolderWholeOrLeavesIt) {
 
   WorldMachine moved = machine_;
   moved.q[static_cast<size_t>(model_.IndependentJoints().front())] += 0.1;
-  ASSERT_TRUE(WritePlanningWorld({moved}, world.string(), nullptr).ok());
+  ASSERT_TRUE(WritePlanningWorld({moved}, nullptr, BackgroundOptions(), world.string(), nullptr).ok());
   ASSERT_TRUE(ReadJointStates((world / "joint_states.yaml").string(), &after).ok());
   EXPECT_NE(before, after);
   for (const auto& entry : fs::directory_iterator(dir_)) {
     EXPECT_EQ(entry.path().filename(), "world") << "left behind: " << entry.path();
   }
+}
+
+// Every edge of a closed surface bounds faces in pairs.
+void ExpectClosed(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> edges;  // undirected edge -> faces
+  std::map<std::pair<int, int>, int> directed;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      ++edges[{std::min(a, b), std::max(a, b)}];
+      ++directed[{a, b}];
+    }
+  }
+  for (const auto& [edge, faces] : edges) EXPECT_EQ(faces % 2, 0) << edge.first << " " << edge.second;
+  // Oriented: each edge is walked as often one way as the other.
+  for (const auto& [edge, count] : directed) {
+    const auto reverse = directed.find({edge.second, edge.first});
+    ASSERT_NE(reverse, directed.end());
+    EXPECT_EQ(reverse->second, count);
+  }
+}
+
+TEST(BackgroundVoxelsTest, OneVoxelTwoVoxelsAndAnOutwardSurface) {
+  const double v = 0.02;
+  EXPECT_EQ(VoxelUnionSurface(OccupiedVoxels({Eigen::Vector3f(0.011f, 0.001f, -0.001f)}, v), v)
+                .triangles.size(),
+            12u);
+  const std::vector<Eigen::Vector3f> pair = {Eigen::Vector3f(0.001f, 0.001f, 0.001f),
+                                             Eigen::Vector3f(0.005f, 0.002f, 0.003f),
+                                             Eigen::Vector3f(0.021f, 0.001f, 0.001f)};
+  EXPECT_EQ(OccupiedVoxels(pair, v).size(), 2u);
+  const TriangleMesh two = VoxelUnionSurface(OccupiedVoxels(pair, v), v);
+  EXPECT_EQ(two.triangles.size(), 20u);  // 10 outer faces
+  ExpectClosed(two);
+  // Outward: the signed volume is the voxels' (divergence theorem).
+  double volume = 0.0;
+  for (const Eigen::Vector3i& t : two.triangles) {
+    volume += two.vertices[t[0]].dot(two.vertices[t[1]].cross(two.vertices[t[2]])) / 6.0;
+  }
+  EXPECT_NEAR(volume, 2 * v * v * v, 1e-12);
+}
+
+TEST(BackgroundVoxelsTest, SurfaceAndOctreeHoldEveryPoint) {
+  // A wall and a box's faces, scanned every 7 mm, and a point far off.
+  std::vector<Eigen::Vector3f> points;
+  for (double a = -0.5; a <= 0.5; a += 0.007) {
+    for (double b = 0.0; b <= 0.6; b += 0.007) points.emplace_back(2.0f, a, b);
+  }
+  for (double a = 0.0; a <= 0.3; a += 0.007) {
+    for (double b = 0.0; b <= 0.2; b += 0.007) {
+      points.emplace_back(a + 0.5, b - 0.1, 0.25);
+      points.emplace_back(a + 0.5, -0.1, b + 0.05);
+    }
+  }
+  const fs::path dir = fs::temp_directory_path() / "edgefit_background_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  BackgroundOptions options;
+  std::vector<std::string> names;
+  ASSERT_TRUE(WriteBackground(points, options, dir.string(), &names).ok());
+  EXPECT_EQ(names, (std::vector<std::string>{"background.ply", "background.bt"}));
+  const TriangleMesh surface = VoxelUnionSurface(OccupiedVoxels(points, options.voxel), options.voxel);
+  ExpectClosed(surface);
+  octomap::OcTree tree((dir / "background.bt").string());
+  EXPECT_DOUBLE_EQ(tree.getResolution(), options.voxel);
+  for (const Eigen::Vector3f& p : points) {
+    const octomap::OcTreeNode* node = tree.search(p.x(), p.y(), p.z());
+    ASSERT_NE(node, nullptr) << p.transpose();
+    EXPECT_TRUE(tree.isNodeOccupied(node)) << p.transpose();
+  }
+  EXPECT_EQ(tree.search(1.0, 0.5, 1.0), nullptr);  // never seen: unknown
+  // The PLY holds the surface: its bounds are the voxels' around the points.
+  ScanSet ply;
+  ASSERT_TRUE(ReadScans((dir / "background.ply").string(), ReadOptions(), &ply).ok());
+  Eigen::AlignedBox3d read, around;
+  read.setEmpty();
+  around.setEmpty();
+  for (size_t i = 0; i < ply.scans[0].size(); ++i) read.extend(ply.scans[0].PointWorld(i));
+  for (const Eigen::Vector3f& p : points) around.extend(p.cast<double>());
+  EXPECT_TRUE(read.contains(around));
+  EXPECT_LT((read.sizes() - around.sizes()).maxCoeff(), 2 * options.voxel + 1e-9);
+  fs::remove_all(dir);
 }
 
 }  // namespace

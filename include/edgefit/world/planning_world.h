@@ -19,7 +19,11 @@
 //   joint_states.yaml         sensor_msgs/JointState of every machine's
 //                             moving joints (prefixed names), as fitted;
 //   machines_as_scanned.ply   every machine's meshes posed at the fitted
-//                             values, world frame, metres.
+//                             values, world frame, metres;
+//   background.ply, .bt       with background points (the scan less every
+//                             fitted machine): its occupied voxels as a
+//                             closed mesh and an OctoMap tree
+//                             (background_voxels.h).
 // A link's mesh is the surface edgefit fitted: its URDF's visual geometry
 // (KinematicModel's Link::mesh), attachments included. Links without a mesh
 // are frames.
@@ -32,6 +36,7 @@
 #include "edgefit/core/pose.h"
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/world/background_voxels.h"
 
 namespace edgefit {
 
@@ -45,11 +50,14 @@ struct WorldMachine {
 
 // Writes the files above into `folder`: first into a temporary folder
 // beside it, which then takes its place (an existing `folder` is replaced
-// only when every file was written). *written (may be null): the files, in
-// order. Fails with one line (nothing written) for no machines, a name
-// that is empty, repeated or not of the allowed characters, or q of the
-// wrong size or not finite.
-Status WritePlanningWorld(const std::vector<WorldMachine>& machines, const std::string& folder,
+// only when every file was written). `background` (world frame; null: no
+// background files). *written (may be null): the files, in order. Fails
+// with one line (nothing written) for no machines, a name that is empty,
+// repeated or not of the allowed characters, or q of the wrong size or not
+// finite.
+Status WritePlanningWorld(const std::vector<WorldMachine>& machines,
+                          const std::vector<Eigen::Vector3f>* background,
+                          const BackgroundOptions& background_options, const std::string& folder,
                           std::vector<std::string>* written);
 
 }  // namespace edgefit

@@ -1,0 +1,98 @@
+#include "edgefit/world/background_voxels.h"
+
+#include <octomap/OcTree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "edgefit/model/mesh_ply.h"
+
+namespace edgefit {
+namespace {
+
+using Voxel = std::array<int32_t, 3>;
+
+bool Contains(const std::vector<Voxel>& sorted, const Voxel& v) {
+  return std::binary_search(sorted.begin(), sorted.end(), v);
+}
+
+}  // namespace
+
+std::vector<Voxel> OccupiedVoxels(const std::vector<Eigen::Vector3f>& points, double voxel) {
+  std::vector<Voxel> voxels;
+  voxels.reserve(points.size());
+  for (const Eigen::Vector3f& p : points) {
+    voxels.push_back({static_cast<int32_t>(std::floor(p.x() / voxel)),
+                      static_cast<int32_t>(std::floor(p.y() / voxel)),
+                      static_cast<int32_t>(std::floor(p.z() / voxel))});
+  }
+  std::sort(voxels.begin(), voxels.end());
+  voxels.erase(std::unique(voxels.begin(), voxels.end()), voxels.end());
+  return voxels;
+}
+
+TriangleMesh VoxelUnionSurface(const std::vector<Voxel>& voxels, double voxel) {
+  TriangleMesh mesh;
+  std::map<Voxel, int> corner_index;  // a corner (integer lattice point) -> vertex
+  auto corner = [&](const Voxel& c) {
+    const auto [it, added] = corner_index.emplace(c, static_cast<int>(mesh.vertices.size()));
+    if (added) mesh.vertices.emplace_back(c[0] * voxel, c[1] * voxel, c[2] * voxel);
+    return it->second;
+  };
+  for (const Voxel& v : voxels) {
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const int side : {-1, 1}) {
+        Voxel neighbour = v;
+        neighbour[static_cast<size_t>(axis)] += side;
+        if (Contains(voxels, neighbour)) continue;  // an inner face
+        // The face's corners: on the plane `axis` = v + (side > 0), the two
+        // other axes u, w spanning it; counter-clockwise seen from outside.
+        const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+        Voxel c = v;
+        c[static_cast<size_t>(axis)] += side > 0 ? 1 : 0;
+        Voxel c00 = c, c10 = c, c11 = c, c01 = c;
+        c10[static_cast<size_t>(u)] += 1;
+        c11[static_cast<size_t>(u)] += 1;
+        c11[static_cast<size_t>(w)] += 1;
+        c01[static_cast<size_t>(w)] += 1;
+        const int a = corner(c00), b = corner(c10), d = corner(c11), e = corner(c01);
+        if (side > 0) {  // u x w = +axis: a b d e counter-clockwise from outside
+          mesh.triangles.emplace_back(a, b, d);
+          mesh.triangles.emplace_back(a, d, e);
+        } else {
+          mesh.triangles.emplace_back(a, d, b);
+          mesh.triangles.emplace_back(a, e, d);
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+Status WriteBackground(const std::vector<Eigen::Vector3f>& points, const BackgroundOptions& options,
+                       const std::string& folder, std::vector<std::string>* names) {
+  if (!(options.voxel > 0.0) || !std::isfinite(options.voxel)) {
+    return Status::Error("world: the background voxel must be finite and > 0");
+  }
+  const std::vector<Voxel> voxels = OccupiedVoxels(points, options.voxel);
+  EDGEFIT_RETURN_IF_ERROR(WriteMeshPly(
+      folder + "/background.ply", VoxelUnionSurface(voxels, options.voxel),
+      "edgefit world: the background's occupied voxels of " + std::to_string(options.voxel) +
+          " m, outer faces, world frame"));
+  names->push_back("background.ply");
+  octomap::OcTree tree(options.voxel);
+  for (const Voxel& v : voxels) {
+    tree.updateNode(octomap::point3d(static_cast<float>((v[0] + 0.5) * options.voxel),
+                                     static_cast<float>((v[1] + 0.5) * options.voxel),
+                                     static_cast<float>((v[2] + 0.5) * options.voxel)),
+                    true, /*lazy_eval=*/true);
+  }
+  tree.updateInnerOccupancy();
+  const std::string bt = folder + "/background.bt";
+  if (!tree.writeBinary(bt)) return Status::Error(bt + ": cannot write the octree");
+  names->push_back("background.bt");
+  return Status::Ok();
+}
+
+}  // namespace edgefit
