@@ -2,6 +2,9 @@
 // (include/edgefit/world/planning_world.h says what is written).
 //   edgefit world --result=robot.json[,other.json] [--name=left[,right]] [--scan=F,...]
 //                 [--voxel_mm=20] --out_dir=DIR
+#include <gflags/gflags.h>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -47,6 +50,11 @@ int RunWorld(const Command& command) {
   std::vector<WorldMachine> machines(results.size());
   std::vector<std::string> notes(results.size());
   std::vector<std::string> scan_inputs;  // the scans the fits read
+  std::vector<double> removal(results.size());  // each machine's background distance [m]
+  gflags::CommandLineFlagInfo distance_flag;
+  const bool distance_given =
+      gflags::GetCommandLineFlagInfo("background_distance_mm", &distance_flag) &&
+      !distance_flag.is_default;
   for (size_t i = 0; i < results.size(); ++i) {
     std::string text;
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadFileToString(results[i], &text));
@@ -58,6 +66,13 @@ int RunWorld(const Command& command) {
     m.model = &models[i];
     m.name = names.empty() ? models[i].name() : names[i];
     m.source = results[i];
+    // A noisy scan's machine points lie farther off its surface: at least
+    // 3 sigma of the noise the fit measured, unless the distance is given.
+    const json& noise = result.value("noise", json::object());
+    removal[i] = FLAGS_background_distance_mm * 1e-3;
+    if (!distance_given && noise.is_object() && noise.value("sigma_m", json()).is_number()) {
+      removal[i] = std::max(removal[i], 3.0 * noise["sigma_m"].get<double>());
+    }
     for (const json& scan : result["inputs"].value("scan", json::array())) {
       if (scan.is_string()) scan_inputs.push_back(scan.get<std::string>());
     }
@@ -90,12 +105,13 @@ int RunWorld(const Command& command) {
     }
     Progress("world: the background, " + std::to_string(scans.TotalValid()) + " points less " +
              std::to_string(machines.size()) + " machines");
-    ModelPointsOptions removal;
-    removal.distance = FLAGS_background_distance_mm * 1e-3;
-    for (const WorldMachine& m : machines) {
+    for (size_t i = 0; i < machines.size(); ++i) {
+      const WorldMachine& m = machines[i];
+      ModelPointsOptions options;
+      options.distance = removal[i];
       std::vector<std::vector<uint8_t>> marks;
       EDGEFIT_RETURN_IF_ERROR_EXIT(
-          command, MarkModelPoints(scans, *m.model, m.q, m.T_world_base, removal, &marks));
+          command, MarkModelPoints(scans, *m.model, m.q, m.T_world_base, options, &marks));
       removed += RemoveMarkedPoints(marks, &scans);
     }
     for (const OrganizedScan& scan : scans.scans) {
@@ -112,15 +128,16 @@ int RunWorld(const Command& command) {
                                   background_options, FLAGS_out_dir, &written));
   for (size_t i = 0; i < machines.size(); ++i) {
     const WorldMachine& m = machines[i];
-    std::printf("%s: %s, %zu links, prefixed %s_%s\n", m.name.c_str(), m.source.c_str(),
-                m.model->links().size(), m.name.c_str(), notes[i].c_str());
+    std::printf("%s: %s, %zu links, prefixed %s_, its points within %.1f mm%s\n", m.name.c_str(),
+                m.source.c_str(), m.model->links().size(), m.name.c_str(), 1e3 * removal[i],
+                notes[i].c_str());
   }
   if (scan_paths.empty()) {
     std::printf("background: none (no --scan, and the results name no scans)\n");
   } else {
-    std::printf("background: %zu points (%zu of the machines removed, within %.1f mm of them) in "
-                "%.0f mm voxels: background.ply, background.bt\n",
-                background.size(), removed, FLAGS_background_distance_mm, FLAGS_voxel_mm);
+    std::printf("background: %zu points (%zu of the machines removed) in %.0f mm voxels: "
+                "background.ply, background.bt\n",
+                background.size(), removed, FLAGS_voxel_mm);
   }
   std::printf("world: %s (%zu files)\n", FLAGS_out_dir.c_str(), written.size());
   return 0;

@@ -30,8 +30,8 @@ TEST_F(CliTest, WorldFromTwoResults) {
   const RunResult r = Run("world --result=" + left + "," + right + " --name=left,right --out_dir=" +
                           Path("world"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("right.json, 10 links, prefixed right_ (the fit said not ok: joint_6 is "
-                       "ambiguous; placed as fitted)"),
+  EXPECT_NE(r.out.find("right.json, 10 links, prefixed right_, its points within 8.0 mm (the fit "
+                       "said not ok: joint_6 is ambiguous; placed as fitted)"),
             std::string::npos)
       << r.out;
   const std::string urdf = Slurp(Path("world/cell.urdf"));
