@@ -5,6 +5,8 @@
 #include <gflags/gflags.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -25,7 +27,8 @@ DEFINE_double(voxel_mm, 20.0,
               "occupied voxels of this edge.");
 DEFINE_string(name, "",
               "world: the machines' instance names, in --result's order (comma list); default: "
-              "each URDF's robot name. Every link and joint of a machine is prefixed '<name>_'.");
+              "each URDF's robot name, or the result file's name where robots repeat. Every link "
+              "and joint of a machine is prefixed '<name>_'.");
 
 namespace edgefit::tools {
 namespace {
@@ -85,6 +88,16 @@ int RunWorld(const Command& command) {
                  "; placed as fitted)";
     }
   }
+  // Default names: the URDF's robot name, or the result file's name where
+  // robots repeat (an instance's result of edgefit cell: robot_1, robot_2).
+  if (names.empty()) {
+    std::map<std::string, int> uses;
+    for (const WorldMachine& m : machines) ++uses[m.name];
+    for (WorldMachine& m : machines) {
+      if (uses[m.name] > 1) m.name = std::filesystem::path(m.source).stem().string();
+    }
+  }
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckWorldMachines(machines));
   // The background: the scans (--scan, else those the fits read) less every
   // machine's points.
   std::vector<std::string> scan_paths = SplitList(FLAGS_scan);

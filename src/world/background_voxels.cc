@@ -1,9 +1,12 @@
 #include "edgefit/world/background_voxels.h"
 
+#include <fcntl.h>
 #include <octomap/OcTree.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "edgefit/model/mesh_ply.h"
@@ -12,6 +15,21 @@ namespace edgefit {
 namespace {
 
 using Voxel = std::array<int32_t, 3>;
+
+// Debian's liboctomap prints its debug lines (" done.") on stderr while it
+// writes a tree; edgefit's stderr holds progress and the one error line.
+bool WriteTreeQuietly(const octomap::OcTree& tree, const std::string& path) {
+  std::fflush(stderr);
+  const int saved = ::dup(STDERR_FILENO);
+  const int null = ::open("/dev/null", O_WRONLY);
+  if (saved >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+  const bool ok = tree.writeBinaryConst(path);
+  std::fflush(stderr);
+  if (saved >= 0) ::dup2(saved, STDERR_FILENO);
+  if (saved >= 0) ::close(saved);
+  if (null >= 0) ::close(null);
+  return ok;
+}
 
 bool Contains(const std::vector<Voxel>& sorted, const Voxel& v) {
   return std::binary_search(sorted.begin(), sorted.end(), v);
@@ -89,8 +107,10 @@ Status WriteBackground(const std::vector<Eigen::Vector3f>& points, const Backgro
                     true, /*lazy_eval=*/true);
   }
   tree.updateInnerOccupancy();
+  tree.toMaxLikelihood();  // as octomap::OcTree::writeBinary does: binary cells, pruned
+  tree.prune();
   const std::string bt = folder + "/background.bt";
-  if (!tree.writeBinary(bt)) return Status::Error(bt + ": cannot write the octree");
+  if (!WriteTreeQuietly(tree, bt)) return Status::Error(bt + ": cannot write the octree");
   names->push_back("background.bt");
   return Status::Ok();
 }

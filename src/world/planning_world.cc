@@ -23,7 +23,9 @@ namespace fs = std::filesystem;
 
 constexpr char kGenerator[] = "edgefit world (src/world)";
 
-Status CheckMachines(const std::vector<WorldMachine>& machines) {
+}  // namespace
+
+Status CheckWorldMachines(const std::vector<WorldMachine>& machines) {
   if (machines.empty()) return Status::Error("world: no machines");
   std::set<std::string> names;
   for (const WorldMachine& m : machines) {
@@ -52,6 +54,8 @@ Status CheckMachines(const std::vector<WorldMachine>& machines) {
   }
   return Status::Ok();
 }
+
+namespace {
 
 // A file name for a link's mesh: the prefixed name, other characters '_'.
 std::string MeshFile(const std::string& prefixed_link) {
@@ -212,7 +216,7 @@ Status WritePlanningWorld(const std::vector<WorldMachine>& machines,
                           const std::vector<Eigen::Vector3f>* background,
                           const BackgroundOptions& background_options, const std::string& folder,
                           std::vector<std::string>* written) {
-  EDGEFIT_RETURN_IF_ERROR(CheckMachines(machines));
+  EDGEFIT_RETURN_IF_ERROR(CheckWorldMachines(machines));
   EDGEFIT_RETURN_IF_ERROR(CheckOutputFolder(folder));
   const fs::path target = fs::absolute(folder).lexically_normal();
   const std::string pid = std::to_string(::getpid());

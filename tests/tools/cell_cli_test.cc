@@ -87,9 +87,12 @@ TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
   // The instances' results (their inputs name the model) make a world.
   const RunResult world =
       Run("world --result=" + r["instances"][0]["result"].get<std::string>() + "," +
-          r["instances"][1]["result"].get<std::string>() + " --name=a,b --out_dir=" + Path("world"));
+          r["instances"][1]["result"].get<std::string>() + " --out_dir=" + Path("world"));
   ASSERT_EQ(world.exit_code, 0) << world.err;
-  EXPECT_NE(Slurp(Path("world/cell.urdf")).find("<joint name=\"world_to_b\""), std::string::npos);
+  // Two of one robot: named by their results (the instances' ids).
+  const std::string id = r["instances"][1]["id"].get<std::string>();
+  EXPECT_NE(Slurp(Path("world/cell.urdf")).find("<joint name=\"world_to_" + id + "\""),
+            std::string::npos);
   EXPECT_NE(world.out.find("background: "), std::string::npos) << world.out;  // the cell's scans
   EXPECT_TRUE(fs::exists(Path("world/background.bt")));
   EXPECT_TRUE(fs::exists(Path("world/background.ply")));

@@ -53,7 +53,9 @@ TEST_F(CliTest, WorldFromTwoResults) {
   ExpectBadInput("world --result=" + left + " --name=a,b --out_dir=" + Path("world"),
                  "--name gives 2 names for 1 results");
   ExpectBadInput("world --result=" + left + "," + left + " --out_dir=" + Path("world"),
-                 "left.json: machine name 'spot_welding_robot' is given twice");
+                 "left.json: machine name 'left' is given twice");
+  ExpectBadInput("world --result=" + left + " --name=a/b --out_dir=" + Path("world"),
+                 "machine name 'a/b' may hold only letters, digits, '_' and '-'");
   Write("no_joint.json", Result("0.2", true).replace(Result("0.2", true).find("\"joint_3\""), 16, ""));
   ExpectBadInput("world --result=" + Path("no_joint.json") + " --out_dir=" + Path("world"),
                  "no_joint.json: joint 'joint_3'");

@@ -48,6 +48,10 @@ struct WorldMachine {
   std::string source;                     // where it came from (a result.json), for messages
 };
 
+// The machines' names and values as WritePlanningWorld checks them, for a
+// caller to check before long work.
+Status CheckWorldMachines(const std::vector<WorldMachine>& machines);
+
 // Writes the files above into `folder`: first into a temporary folder
 // beside it, which then takes its place (an existing `folder` is replaced
 // only when every file was written). `background` (world frame; null: no
