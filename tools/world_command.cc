@@ -17,6 +17,7 @@
 #include "common_flags.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
+#include "edgefit/pipeline/attached_points.h"
 #include "edgefit/pipeline/model_points.h"
 #include "edgefit/world/planning_world.h"
 #include "fit_result_file.h"
@@ -99,7 +100,7 @@ int RunWorld(const Command& command) {
   }
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckWorldMachines(machines));
   // The background: the scans (--scan, else those the fits read) less every
-  // machine's points.
+  // machine's points and the points attached to them.
   std::vector<std::string> scan_paths = SplitList(FLAGS_scan);
   if (scan_paths.empty()) {
     std::set<std::string> seen;
@@ -125,6 +126,11 @@ int RunWorld(const Command& command) {
       std::vector<std::vector<uint8_t>> marks;
       EDGEFIT_RETURN_IF_ERROR_EXIT(
           command, MarkModelPoints(scans, *m.model, m.q, m.T_world_base, options, &marks));
+      // And what rides on it off its CAD (dress packs, hoses, covers), as
+      // edgefit cell takes it: left in, the arm's ghost would be an obstacle.
+      EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                                   MarkAttachedPoints(scans, *m.model, m.q, m.T_world_base,
+                                                      AttachedPointsOptions(), &marks));
       removed += RemoveMarkedPoints(marks, &scans);
     }
     for (const OrganizedScan& scan : scans.scans) {
