@@ -127,8 +127,6 @@ std::string CellUrdf(const std::vector<WorldMachine>& machines, bool frozen) {
   return urdf.ToString();
 }
 
-std::string Number(double value) { return FormatUrdfNumber(value); }
-
 // cell.srdf: MoveIt's semantic description of cell.urdf.
 std::string CellSrdf(const std::vector<WorldMachine>& machines) {
   std::ostringstream os;
@@ -147,7 +145,7 @@ std::string CellSrdf(const std::vector<WorldMachine>& machines) {
     for (size_t j = 0; j < m.model->joints().size(); ++j) {
       const Joint& joint = m.model->joints()[j];
       if (!joint.IsIndependent()) continue;
-      os << "    <joint name=\"" << m.name << "_" << joint.name << "\" value=\"" << Number(m.q[j])
+      os << "    <joint name=\"" << m.name << "_" << joint.name << "\" value=\"" << FormatUrdfNumber(m.q[j])
          << "\"/>\n";
     }
     os << "  </group_state>\n";
