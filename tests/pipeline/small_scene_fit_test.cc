@@ -6,10 +6,12 @@
 //   - the robot with its gun and jackets on a realistic scan: every stage of
 //     Fit() (rough base, chain, stations, coverings, whole-chain refinement,
 //     the final basins, the verdict, the covariance) and result.json;
-//   - the robot with accessories, and the same place without the robot: the
-//     fit stops and says why;
+//   - the same place without the robot: the fit stops and says why;
 //   - the conveyor: the arm tips (Sec. 6.1) and the prismatic chain;
 //   - a cell of two robots: FitCell finds both and removes their points.
+// The robot with accessories runs in the release half only
+// (SmallSceneFitE2eTest: 116 s of the sanitizer half's CPU): its code is the
+// every-stage fit's.
 // The spacing is coarse, so the bars are loose: they catch a fit that went
 // wrong, not a loss of accuracy (the e2e tests hold those bars).
 #include <glog/logging.h>
@@ -118,7 +120,7 @@ const testing_util::RobotScene& GetRobotScene() {
   return *scene;
 }
 
-TEST(SmallSceneFitTest, RobotWithAccessories) {
+TEST(SmallSceneFitE2eTest, RobotWithAccessories) {
   const testing_util::RobotScene& s = GetRobotScene();
   EXPECT_LT(s.scans.TotalValid(), 500000u);
   FitResult fit;

@@ -15,7 +15,10 @@ using edgefit_cli_test::Slurp;
 using edgefit_cli_test::kBalancerArm;
 namespace fs = std::filesystem;
 
-TEST_F(CliTest, EdgesWritesWeightsJsonAndPly) {
+// A scan and edge detection of it: the release half only (71 s under the
+// sanitizers, where edges_test covers the detector).
+using EdgesCliE2eTest = CliTest;
+TEST_F(EdgesCliE2eTest, EdgesWritesWeightsJsonAndPly) {
   const std::string scan = Path("arm.ptx"), labels = Path("arm.labels");
   const RunResult s = Run("scan --urdf=" + kBalancerArm + " --accessories --scanners=2 --out=" + scan +
                           " --truth=" + Path("arm.json") + " --labels=" + labels);

@@ -16,8 +16,10 @@ using edgefit_cli_test::Slurp;
 using edgefit_cli_test::kBalancerArm;
 namespace fs = std::filesystem;
 
-// The fit's report, and edgefit report from its result.json.
-TEST_F(CliTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
+// The fit's report, and edgefit report from its result.json: a whole fit and
+// a headless browser, the release half only (123 s under the sanitizers).
+using ReportCliE2eTest = CliTest;
+TEST_F(ReportCliE2eTest, FitReportOpensOfflineAndShowsScanModelAndJoints) {
   const std::string scan = Path("arm.ptx"), truth = Path("truth.json");
   ASSERT_EQ(Run("scan --urdf=" + kBalancerArm + " --scanners=2 --accessories --out=" + scan +
                 " --truth=" + truth)
