@@ -13,7 +13,7 @@ packages=(
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   liburdfdom-dev liburdfdom-headers-dev libassimp-dev libnanoflann-dev
   libomp-dev libembree-dev nlohmann-json3-dev libfast-float-dev libtinyxml2-dev libpng-dev
-  libyaml-cpp-dev liblzf-dev liboctomap-dev
+  libyaml-cpp-dev liblzf-dev liboctomap-dev libfcl-dev
   libgtest-dev libgmock-dev libbenchmark-dev liburdfdom-tools
   clang libclang-rt-14-dev
   python3

@@ -16,6 +16,7 @@ Command BenchCommand();
 Command CellCommand();
 Command ReportCommand();
 Command WorldCommand();
+Command ClearanceCommand();
 
 }  // namespace edgefit::tools
 

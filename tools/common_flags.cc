@@ -73,7 +73,8 @@ DEFINE_string(joints, "",
               "Joint values: name=value,... in rad / m, or with a unit: joint_2=-30deg, "
               "slide=250mm. scan: the posture (joints not named stay at 0 or their nearest "
               "limit); fit: the known joints, held at these values while the others are "
-              "fitted (all of them: the base alone, camera-to-robot calibration).");
+              "fitted (all of them: the base alone, camera-to-robot calibration); clearance: the "
+              "posture checked.");
 
 namespace edgefit::tools {
 

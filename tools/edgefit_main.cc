@@ -23,6 +23,7 @@ const std::vector<Command>& AllCommands() {
       ReportCommand(),
       CellCommand(),
       WorldCommand(),
+      ClearanceCommand(),
       BatchCommand(),
       BenchCommand(),
   };

@@ -26,6 +26,9 @@ DECLARE_double(background_distance_mm);
 DEFINE_double(voxel_mm, 20.0,
               "world: the background's voxel [mm]: background.ply and background.bt hold the "
               "occupied voxels of this edge.");
+DEFINE_double(carve_mm, 20.0,
+              "world: the background's voxels within this of a machine as scanned are taken as "
+              "free [mm]: what is left there of its own points would block its first motion.");
 DEFINE_string(name, "",
               "world: the machines' instance names, in --result's order (comma list); default: "
               "each URDF's robot name, or the result file's name where robots repeat. Every link "
@@ -41,6 +44,7 @@ int RunWorld(const Command& command) {
   const std::vector<std::string> names = SplitList(FLAGS_name);
   if (results.empty()) return BadInput(command, "--result is required");
   if (!(FLAGS_voxel_mm > 0.0)) return BadInput(command, "--voxel_mm must be > 0");
+  if (!(FLAGS_carve_mm >= 0.0)) return BadInput(command, "--carve_mm must be >= 0");
   if (!(FLAGS_background_distance_mm > 0.0)) {
     return BadInput(command, "--background_distance_mm must be > 0");
   }
@@ -141,6 +145,7 @@ int RunWorld(const Command& command) {
   }
   BackgroundOptions background_options;
   background_options.voxel = FLAGS_voxel_mm * 1e-3;
+  background_options.carve_margin = FLAGS_carve_mm * 1e-3;
   std::vector<std::string> written;
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, WritePlanningWorld(machines, scan_paths.empty() ? nullptr : &background,
@@ -172,12 +177,13 @@ Command WorldCommand() {
           "background.ply (closed voxel mesh) and background.bt (OctoMap)",
           "Usage:\n"
           "  edgefit world --result=R.json[,R2.json] [--name=N[,N2]] [--scan=F,...] [--voxel_mm=20]\n"
+          "                [--carve_mm=20]\n"
           "                [--background_distance_mm=8] [--camera_info=C.yaml] --out_dir=DIR\n"
           "Example:\n"
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
           "  edgefit world --result=result.json --name=robot --out_dir=world\n"
           "  check_urdf world/cell.urdf",
-          {"result", "name", "scan", "camera_info", "depth_scale", "voxel_mm",
+          {"result", "name", "scan", "camera_info", "depth_scale", "voxel_mm", "carve_mm",
            "background_distance_mm", "out_dir"},
           RunWorld};
 }

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
+#include <unordered_map>
 
+#include "edgefit/core/split_mix64.h"
 #include "edgefit/model/mesh_ply.h"
+#include "fcl_mesh.h"
 
 namespace edgefit {
 namespace {
@@ -17,13 +19,15 @@ namespace {
 using Voxel = std::array<int32_t, 3>;
 
 // Debian's liboctomap prints its debug lines (" done.") on stderr while it
-// writes a tree; edgefit's stderr holds progress and the one error line.
-bool WriteTreeQuietly(const octomap::OcTree& tree, const std::string& path) {
+// reads or writes a tree; edgefit's stderr holds progress and the one error
+// line.
+template <typename F>
+bool Quietly(F&& io) {
   std::fflush(stderr);
   const int saved = ::dup(STDERR_FILENO);
   const int null = ::open("/dev/null", O_WRONLY);
   if (saved >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
-  const bool ok = tree.writeBinaryConst(path);
+  const bool ok = io();
   std::fflush(stderr);
   if (saved >= 0) ::dup2(saved, STDERR_FILENO);
   if (saved >= 0) ::close(saved);
@@ -52,7 +56,15 @@ std::vector<Voxel> OccupiedVoxels(const std::vector<Eigen::Vector3f>& points, do
 
 TriangleMesh VoxelUnionSurface(const std::vector<Voxel>& voxels, double voxel) {
   TriangleMesh mesh;
-  std::map<Voxel, int> corner_index;  // a corner (integer lattice point) -> vertex
+  struct CornerHash {
+    size_t operator()(const Voxel& c) const {
+      return static_cast<size_t>(Mix64((static_cast<uint64_t>(static_cast<uint32_t>(c[0])) << 42) ^
+                                               (static_cast<uint64_t>(static_cast<uint32_t>(c[1])) << 21) ^
+                                               static_cast<uint32_t>(c[2])));
+    }
+  };
+  std::unordered_map<Voxel, int, CornerHash> corner_index;  // a corner (lattice point) -> vertex
+  corner_index.reserve(2 * voxels.size());
   auto corner = [&](const Voxel& c) {
     const auto [it, added] = corner_index.emplace(c, static_cast<int>(mesh.vertices.size()));
     if (added) mesh.vertices.emplace_back(c[0] * voxel, c[1] * voxel, c[2] * voxel);
@@ -88,12 +100,72 @@ TriangleMesh VoxelUnionSurface(const std::vector<Voxel>& voxels, double voxel) {
   return mesh;
 }
 
-Status WriteBackground(const std::vector<Eigen::Vector3f>& points, const BackgroundOptions& options,
+size_t CarveVoxels(const TriangleMesh& mesh_world, double voxel, double margin,
+                   std::vector<Voxel>* voxels) {
+  if (mesh_world.empty()) return 0;
+  Eigen::AlignedBox3d box = mesh_world.BoundingBox(Pose::Identity());
+  box.min().array() -= margin;
+  box.max().array() += margin;
+  Voxel low, high;
+  for (int a = 0; a < 3; ++a) {
+    low[static_cast<size_t>(a)] = static_cast<int32_t>(std::floor(box.min()[a] / voxel));
+    high[static_cast<size_t>(a)] = static_cast<int32_t>(std::floor(box.max()[a] / voxel));
+  }
+  const FclMesh mesh(mesh_world);
+  const size_t before = voxels->size();
+  voxels->erase(std::remove_if(voxels->begin(), voxels->end(),
+                               [&](const Voxel& v) {
+                                 for (size_t a = 0; a < 3; ++a) {
+                                   if (v[a] < low[a] || v[a] > high[a]) return false;
+                                 }
+                                 const Eigen::Vector3d corner(v[0] * voxel, v[1] * voxel, v[2] * voxel);
+                                 return mesh.CollidesBox(
+                                     Pose::Identity(),
+                                     Eigen::AlignedBox3d(corner - Eigen::Vector3d::Constant(margin),
+                                                         corner + Eigen::Vector3d::Constant(voxel + margin)));
+                               }),
+                voxels->end());
+  return before - voxels->size();
+}
+
+Status ReadBackgroundVoxels(const std::string& path, const Eigen::AlignedBox3d& region,
+                            std::vector<Voxel>* voxels, double* voxel) {
+  voxels->clear();
+  octomap::OcTree tree(0.1);
+  if (!Quietly([&] { return tree.readBinary(path); })) {
+    return Status::Error(path + ": cannot read it as an OctoMap binary tree (.bt)");
+  }
+  *voxel = tree.getResolution();
+  const double v = *voxel;
+  const auto point = [](const Eigen::Vector3d& p) {
+    return octomap::point3d(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
+  };
+  for (auto it = tree.begin_leafs_bbx(point(region.min()), point(region.max())),
+            end = tree.end_leafs_bbx();
+       it != end; ++it) {
+    if (!tree.isNodeOccupied(*it)) continue;
+    // A pruned leaf spans 2^k cells along each axis.
+    const double half = 0.5 * it.getSize();
+    const int n = std::max(1, static_cast<int>(std::lround(it.getSize() / v)));
+    const int32_t x0 = static_cast<int32_t>(std::lround((it.getX() - half) / v));
+    const int32_t y0 = static_cast<int32_t>(std::lround((it.getY() - half) / v));
+    const int32_t z0 = static_cast<int32_t>(std::lround((it.getZ() - half) / v));
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        for (int k = 0; k < n; ++k) voxels->push_back({x0 + i, y0 + j, z0 + k});
+      }
+    }
+  }
+  std::sort(voxels->begin(), voxels->end());
+  voxels->erase(std::unique(voxels->begin(), voxels->end()), voxels->end());
+  return Status::Ok();
+}
+
+Status WriteBackground(const std::vector<Voxel>& voxels, const BackgroundOptions& options,
                        const std::string& folder, std::vector<std::string>* names) {
   if (!(options.voxel > 0.0) || !std::isfinite(options.voxel)) {
     return Status::Error("world: the background voxel must be finite and > 0");
   }
-  const std::vector<Voxel> voxels = OccupiedVoxels(points, options.voxel);
   EDGEFIT_RETURN_IF_ERROR(WriteMeshPly(
       folder + "/background.ply", VoxelUnionSurface(voxels, options.voxel),
       "edgefit world: the background's occupied voxels of " + std::to_string(options.voxel) +
@@ -110,7 +182,7 @@ Status WriteBackground(const std::vector<Eigen::Vector3f>& points, const Backgro
   tree.toMaxLikelihood();  // as octomap::OcTree::writeBinary does: binary cells, pruned
   tree.prune();
   const std::string bt = folder + "/background.bt";
-  if (!WriteTreeQuietly(tree, bt)) return Status::Error(bt + ": cannot write the octree");
+  if (!Quietly([&] { return tree.writeBinaryConst(bt); })) return Status::Error(bt + ": cannot write the octree");
   names->push_back("background.bt");
   return Status::Ok();
 }

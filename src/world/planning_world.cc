@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -15,6 +16,7 @@
 #include "edgefit/io/joint_states.h"
 #include "edgefit/model/loop_closure.h"
 #include "edgefit/model/mesh_ply.h"
+#include "edgefit/world/collision_pairs.h"
 
 namespace edgefit {
 namespace {
@@ -151,11 +153,24 @@ std::string CellSrdf(const std::vector<WorldMachine>& machines) {
     os << "  </group_state>\n";
   }
   for (const WorldMachine& m : machines) {
-    for (const Joint& joint : m.model->joints()) {
+    for (const LinkPair& pair : DisabledCollisionPairs(*m.model, m.q, CollisionPairsOptions())) {
       os << "  <disable_collisions link1=\"" << m.name << "_"
-         << m.model->links()[static_cast<size_t>(joint.parent_link)].name << "\" link2=\""
-         << m.name << "_" << m.model->links()[static_cast<size_t>(joint.child_link)].name
-         << "\" reason=\"Adjacent\"/>\n";
+         << m.model->links()[static_cast<size_t>(pair.link_a)].name << "\" link2=\"" << m.name
+         << "_" << m.model->links()[static_cast<size_t>(pair.link_b)].name << "\" reason=\""
+         << pair.reason << "\"/>\n";
+    }
+  }
+  for (size_t i = 0; i < machines.size(); ++i) {
+    const WorldMachine& a = machines[i];
+    const std::vector<Pose> T_a = a.model->ForwardKinematics(a.q, a.T_world_base);
+    for (size_t k = i + 1; k < machines.size(); ++k) {
+      const WorldMachine& b = machines[k];
+      const std::vector<Pose> T_b = b.model->ForwardKinematics(b.q, b.T_world_base);
+      for (const auto& [la, lb] : TouchingLinks(*a.model, T_a, *b.model, T_b)) {
+        os << "  <disable_collisions link1=\"" << a.name << "_"
+           << a.model->links()[static_cast<size_t>(la)].name << "\" link2=\"" << b.name << "_"
+           << b.model->links()[static_cast<size_t>(lb)].name << "\" reason=\"Default\"/>\n";
+      }
     }
   }
   os << "</robot>\n";
@@ -181,6 +196,8 @@ Status WriteFiles(const std::vector<WorldMachine>& machines,
                   const BackgroundOptions& background_options, const fs::path& dir,
                   std::vector<std::string>* names) {
   TriangleMesh as_scanned;
+  std::vector<std::array<int32_t, 3>> voxels;
+  if (background != nullptr) voxels = OccupiedVoxels(*background, background_options.voxel);
   for (const WorldMachine& m : machines) {
     const std::vector<Pose> T_world_link = m.model->ForwardKinematics(m.q, m.T_world_base);
     for (size_t l = 0; l < m.model->links().size(); ++l) {
@@ -190,6 +207,10 @@ Status WriteFiles(const std::vector<WorldMachine>& machines,
       EDGEFIT_RETURN_IF_ERROR(WriteBinaryStl((dir / file).string(), link.mesh, m.name + "_" + link.name));
       names->push_back(file);
       as_scanned.Append(link.mesh, T_world_link[l]);
+      if (background == nullptr) continue;
+      TriangleMesh posed;
+      posed.Append(link.mesh, T_world_link[l]);
+      CarveVoxels(posed, background_options.voxel, background_options.carve_margin, &voxels);
     }
   }
   const std::vector<std::pair<std::string, std::string>> texts = {
@@ -205,7 +226,7 @@ Status WriteFiles(const std::vector<WorldMachine>& machines,
                                        "edgefit world: the machines as fitted, world frame"));
   names->push_back("machines_as_scanned.ply");
   if (background == nullptr) return Status::Ok();
-  return WriteBackground(*background, background_options, dir.string(), names);
+  return WriteBackground(voxels, background_options, dir.string(), names);
 }
 
 }  // namespace
@@ -216,6 +237,13 @@ Status WritePlanningWorld(const std::vector<WorldMachine>& machines,
                           std::vector<std::string>* written) {
   EDGEFIT_RETURN_IF_ERROR(CheckWorldMachines(machines));
   EDGEFIT_RETURN_IF_ERROR(CheckOutputFolder(folder));
+  // Mimic and loop-closure joints as a consumer of the files computes them.
+  std::vector<WorldMachine> resolved = machines;
+  for (WorldMachine& m : resolved) {
+    if (Status s = m.model->ResolveDependentJoints(&m.q); !s.ok()) {
+      return Status::Error((m.source.empty() ? m.name : m.source) + ": " + s.message());
+    }
+  }
   const fs::path target = fs::absolute(folder).lexically_normal();
   const std::string pid = std::to_string(::getpid());
   const fs::path temporary = target.string() + ".tmp." + pid;
@@ -224,7 +252,7 @@ Status WritePlanningWorld(const std::vector<WorldMachine>& machines,
   fs::remove_all(temporary, error);
   EDGEFIT_RETURN_IF_ERROR(CreateFolder((temporary / "meshes").string(), nullptr));
   std::vector<std::string> names;
-  Status status = WriteFiles(machines, background, background_options, temporary, &names);
+  Status status = WriteFiles(resolved, background, background_options, temporary, &names);
   if (status.ok() && fs::exists(target)) {
     fs::rename(target, old, error);
     if (error) status = Status::Error(folder + ": cannot replace it: " + error.message());

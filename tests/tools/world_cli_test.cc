@@ -2,6 +2,7 @@
 // machine per result named as asked; bad input one line, exit 2, nothing
 // written.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tools/cli_fixture.h"
@@ -14,19 +15,19 @@ using edgefit_cli_test::Slurp;
 namespace fs = std::filesystem;
 
 // A result.json as edgefit fit writes it, of the bundled robot.
-std::string Result(const std::string& joint_2, bool ok) {
+std::string Result(const std::string& joint_2, bool ok, const std::string& x = "3") {
   return std::string("{\"inputs\": {\"urdf\": \"") + EDGEFIT_SOURCE_DIR +
          "/assets/robot/robot.urdf\", \"attach\": [], \"scan\": []},\n"
          "\"joints\": {\"joint_1\": 0.1, \"joint_2\": " + joint_2 +
          ", \"joint_3\": 0.3, \"joint_4\": 0.4, \"joint_5\": 0.5, \"joint_6\": 0.6, "
          "\"balancer_cylinder_joint\": 0, \"balancer_piston_joint\": 0},\n"
-         "\"base\": {\"T_world_base\": [[0, -1, 0, 3], [1, 0, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]},\n"
+         "\"base\": {\"T_world_base\": [[0, -1, 0, " + x + "], [1, 0, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]},\n"
          "\"quality\": {\"ok\": " + (ok ? "true" : "false") + ", \"message\": \"joint_6 is ambiguous\"}}\n";
 }
 
 TEST_F(CliTest, WorldFromTwoResults) {
   const std::string left = Write("left.json", Result("0.2", true));
-  const std::string right = Write("right.json", Result("-0.2", false));
+  const std::string right = Write("right.json", Result("-0.2", false, "6"));
   const RunResult r = Run("world --result=" + left + "," + right + " --name=left,right --out_dir=" +
                           Path("world"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -62,6 +63,34 @@ TEST_F(CliTest, WorldFromTwoResults) {
   ExpectBadInput("world --result=" + Path("absent.json") + " --out_dir=" + Path("world"), "absent.json");
   ExpectBadInput("world --result=" + left, "--out_dir is required");
   EXPECT_EQ(Slurp(Path("world/cell.urdf")), before);
+
+  // edgefit clearance in that world: left's trajectory, in JSON.
+  Write("traj.csv", "# left leans over\njoint_2,joint_3\n0.2,0.3\n0.5,0.3\n");
+  const RunResult c = Run("clearance --world=" + Path("world") + " --machine=left --trajectory=" +
+                          Path("traj.csv") + " --json");
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  const nlohmann::json out = nlohmann::json::parse(c.out);
+  ASSERT_EQ(out["waypoints"].size(), 2u);
+  for (const nlohmann::json& w : out["waypoints"]) {
+    EXPECT_TRUE(w["distance_to_background"].is_null());  // the world has no background
+    EXPECT_GT(w["distance_to_machines"].get<double>(), 0.5);  // right stands 3 m away
+    EXPECT_TRUE(w["self_distance"].is_number());
+    EXPECT_FALSE(w["colliding"].get<bool>());
+  }
+  EXPECT_TRUE(out["first_collision"].is_null());
+  ExpectBadInput("clearance --world=" + Path("world") + " --joints=joint_2=0.1",
+                 "2 machines (left, right): name one with --machine");
+  ExpectBadInput("clearance --world=" + Path("world") + " --machine=middle",
+                 "no machine 'middle' (the world holds: left, right)");
+  ExpectBadInput("clearance --world=" + Path("world") + " --machine=left --joints=joint_2=9",
+                 "--joints: joint 'joint_2': 9 is outside its limits");
+  Write("bad.csv", "joint_2,joint_3\n0.2,nan\n");
+  ExpectBadInput("clearance --world=" + Path("world") + " --machine=left --trajectory=" + Path("bad.csv"),
+                 "bad.csv:2: 'nan' is not a finite number");
+  Write("short.csv", "joint_2,joint_3\n0.2\n");
+  ExpectBadInput("clearance --world=" + Path("world") + " --machine=left --trajectory=" + Path("short.csv"),
+                 "short.csv:2: 1 values for 2 joints in the header");
+  ExpectBadInput("clearance --world=" + Path("absent"), "absent: not a folder");
 }
 
 }  // namespace

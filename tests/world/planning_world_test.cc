@@ -245,7 +245,7 @@ TEST(BackgroundVoxelsTest, SurfaceAndOctreeHoldEveryPoint) {
   fs::create_directories(dir);
   BackgroundOptions options;
   std::vector<std::string> names;
-  ASSERT_TRUE(WriteBackground(points, options, dir.string(), &names).ok());
+  ASSERT_TRUE(WriteBackground(OccupiedVoxels(points, options.voxel), options, dir.string(), &names).ok());
   EXPECT_EQ(names, (std::vector<std::string>{"background.ply", "background.bt"}));
   const TriangleMesh surface = VoxelUnionSurface(OccupiedVoxels(points, options.voxel), options.voxel);
   ExpectClosed(surface);

@@ -13,7 +13,7 @@
 #ifndef EDGEFIT_WORLD_BACKGROUND_VOXELS_H_
 #define EDGEFIT_WORLD_BACKGROUND_VOXELS_H_
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <string>
 #include <vector>
@@ -27,6 +27,10 @@ struct BackgroundOptions {
   // The voxels' edge [m]: a background point lies inside the mesh, at most
   // this far (times sqrt 3) from the surface it stands for.
   double voxel = 0.02;
+  // [m] The voxels within this of a machine as scanned are taken as free
+  // (CarveVoxels): what is left there of the machine's own points would
+  // block its first motion.
+  double carve_margin = 0.02;
 };
 
 // The occupied voxels (integer cells, sorted, unique) of world points.
@@ -37,10 +41,25 @@ std::vector<std::array<int32_t, 3>> OccupiedVoxels(const std::vector<Eigen::Vect
 // normals outward.
 TriangleMesh VoxelUnionSurface(const std::vector<std::array<int32_t, 3>>& voxels, double voxel);
 
-// Writes background.ply and background.bt into `folder` (an existing folder);
-// appends their names to *names.
-Status WriteBackground(const std::vector<Eigen::Vector3f>& points, const BackgroundOptions& options,
-                       const std::string& folder, std::vector<std::string>* names);
+// Removes from *voxels (sorted) the cells whose cube, grown by `margin`
+// [m] on every side, touches the surface of `mesh_world` (world frame):
+// space a machine filled when it was scanned, and its rim, where what is
+// left of its points (mixed pixels, noise beyond the removal distance)
+// would be its own ghost. Returns how many were removed.
+size_t CarveVoxels(const TriangleMesh& mesh_world, double voxel, double margin,
+                   std::vector<std::array<int32_t, 3>>* voxels);
+
+// Writes background.ply and background.bt of `voxels` (OccupiedVoxels, less
+// what was carved) into `folder` (an existing folder); appends their names
+// to *names.
+Status WriteBackground(const std::vector<std::array<int32_t, 3>>& voxels,
+                       const BackgroundOptions& options, const std::string& folder,
+                       std::vector<std::string>* names);
+
+// The occupied cells of a background.bt that lie in `region` (world frame),
+// sorted, and the tree's voxel [m].
+Status ReadBackgroundVoxels(const std::string& path, const Eigen::AlignedBox3d& region,
+                            std::vector<std::array<int32_t, 3>>* voxels, double* voxel);
 
 }  // namespace edgefit
 

@@ -14,16 +14,19 @@
 //                             value (for consumers that cannot set joints);
 //   cell.srdf                 a group per machine (its moving joints), a
 //                             group_state "as_scanned" with the fitted
-//                             values, and collisions disabled between links
-//                             joined by a joint ("Adjacent");
+//                             values, and the link pairs a self-collision
+//                             check skips (collision_pairs.h: "Adjacent",
+//                             "Always", "Default");
 //   joint_states.yaml         sensor_msgs/JointState of every machine's
 //                             moving joints (prefixed names), as fitted;
 //   machines_as_scanned.ply   every machine's meshes posed at the fitted
 //                             values, world frame, metres;
 //   background.ply, .bt       with background points (the scan less every
-//                             fitted machine): its occupied voxels as a
-//                             closed mesh and an OctoMap tree
-//                             (background_voxels.h).
+//                             fitted machine): its occupied voxels, less
+//                             those the machines' meshes as scanned touch
+//                             (CarveVoxels: no ghost of a machine stays in
+//                             its own way), as a closed mesh and an OctoMap
+//                             tree (background_voxels.h).
 // A link's mesh is the surface edgefit fitted: its URDF's visual geometry
 // (KinematicModel's Link::mesh), attachments included. Links without a mesh
 // are frames.

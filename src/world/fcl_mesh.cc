@@ -1,0 +1,66 @@
+#include "fcl_mesh.h"
+
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+#include <glog/logging.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace edgefit {
+
+struct FclMesh::Impl {
+  fcl::BVHModel<fcl::OBBRSSd> model;
+};
+
+FclMesh::FclMesh(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
+  CHECK(!mesh.empty());
+  std::vector<fcl::Triangle> triangles;
+  triangles.reserve(mesh.triangles.size());
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    triangles.emplace_back(static_cast<size_t>(t[0]), static_cast<size_t>(t[1]),
+                           static_cast<size_t>(t[2]));
+  }
+  impl_->model.beginModel(static_cast<int>(triangles.size()), static_cast<int>(mesh.vertices.size()));
+  impl_->model.addSubModel(mesh.vertices, triangles);
+  impl_->model.endModel();
+}
+
+FclMesh::~FclMesh() = default;
+
+double FclMesh::Distance(const Pose& T_world_this, const FclMesh& other,
+                         const Pose& T_world_other) const {
+  fcl::DistanceRequestd request;
+  fcl::DistanceResultd result;
+  const double d = fcl::distance(&impl_->model, fcl::Transform3d(T_world_this.matrix()),
+                                 &other.impl_->model, fcl::Transform3d(T_world_other.matrix()),
+                                 request, result);
+  return std::max(0.0, d);  // FCL gives -1 (or 0) for crossing meshes
+}
+
+bool FclMesh::CollidesBox(const Pose& T_world_this, const Eigen::AlignedBox3d& box_world) const {
+  const fcl::Boxd box(box_world.sizes());
+  fcl::Transform3d T_world_box = fcl::Transform3d::Identity();
+  T_world_box.translation() = box_world.center();
+  fcl::CollisionRequestd request;
+  fcl::CollisionResultd result;
+  fcl::collide(&impl_->model, fcl::Transform3d(T_world_this.matrix()), &box, T_world_box, request,
+               result);
+  return result.isCollision();
+}
+
+bool FclMesh::Collides(const Pose& T_world_this, const FclMesh& other, const Pose& T_world_other,
+                       Eigen::Vector3d* p_world) const {
+  fcl::CollisionRequestd request;
+  request.enable_contact = p_world != nullptr;
+  fcl::CollisionResultd result;
+  fcl::collide(&impl_->model, fcl::Transform3d(T_world_this.matrix()), &other.impl_->model,
+               fcl::Transform3d(T_world_other.matrix()), request, result);
+  if (p_world != nullptr && result.numContacts() > 0) *p_world = result.getContact(0).pos;
+  return result.isCollision();
+}
+
+}  // namespace edgefit

@@ -1,0 +1,146 @@
+// edgefit clearance against the truth of a scene it is given: the bundled
+// robot before a wall of points at a known place. The distance to the wall
+// as scanned, a waypoint that passes it and one that hits it (on the right
+// waypoint, at the right place on the way), and the robot's own ghost
+// (points on its surface left in the background) carved away.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "edgefit/model/urdf_loader.h"
+#include "edgefit/world/clearance.h"
+#include "edgefit/world/planning_world.h"
+
+namespace edgefit {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kVoxel = 0.02;
+
+class ClearanceTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / "edgefit_clearance_test";
+    fs::remove_all(dir_);
+    ASSERT_TRUE(LoadKinematicModel(std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/robot.urdf",
+                                   ModelLoadOptions(), &model_)
+                    .ok());
+    joint_2_ = model_.JointIndex("joint_2");
+    ASSERT_GE(joint_2_, 0);
+    q_ = model_.ZeroJoints();
+    ASSERT_TRUE(model_.ResolveDependentJoints(&q_).ok());
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // The farthest +x of the links that move off the base, at joint_2 = a.
+  double MaxX(double a) const {
+    std::vector<double> q = q_;
+    q[static_cast<size_t>(joint_2_)] = a;
+    EXPECT_TRUE(model_.ResolveDependentJoints(&q).ok());
+    const std::vector<Pose> T = model_.ForwardKinematics(q);
+    double x = -1e9;
+    for (size_t l = 0; l < model_.links().size(); ++l) {
+      if (static_cast<int>(l) == model_.root_link() || model_.links()[l].mesh.empty()) continue;
+      x = std::max(x, model_.links()[l].mesh.BoundingBox(T[l]).max().x());
+    }
+    return x;
+  }
+
+  fs::path dir_;
+  KinematicModel model_;
+  int joint_2_ = -1;
+  std::vector<double> q_;
+};
+
+TEST_F(ClearanceTest, WallAtAKnownDistance) {
+  // A wall of points (10 mm apart) in the plane x = wall, in the middle of
+  // a voxel: its voxels' near face is x = face, 10 mm before it.
+  const double as_scanned = MaxX(0.0);
+  const double face = std::ceil((as_scanned + 0.15) / kVoxel) * kVoxel;
+  const double wall = face + 0.5 * kVoxel;
+  std::vector<Eigen::Vector3f> points;
+  for (double y = -3.0; y <= 3.0; y += 0.01) {
+    for (double z = 0.0; z <= 3.0; z += 0.01) points.emplace_back(wall, y, z);
+  }
+  // The robot's own ghost: points on its surface as scanned.
+  const std::vector<Pose> T = model_.ForwardKinematics(q_);
+  for (size_t l = 0; l < model_.links().size(); ++l) {
+    for (const Eigen::Vector3d& v : model_.links()[l].mesh.vertices) {
+      points.push_back((T[l] * v).cast<float>());
+    }
+  }
+  WorldMachine machine;
+  machine.name = "robot";
+  machine.model = &model_;
+  machine.q = q_;
+  BackgroundOptions background;
+  background.voxel = kVoxel;
+  ASSERT_TRUE(WritePlanningWorld({machine}, &points, background, (dir_ / "world").string(), nullptr).ok());
+
+  ClearanceWorld world;
+  ASSERT_TRUE(world.Load((dir_ / "world").string(), "robot", 1.0).ok());
+  ASSERT_EQ(world.machines(), std::vector<std::string>{"robot"});
+  // Waypoints along joint_2 (leaning the arm to +x): one that passes 30 mm
+  // before the wall's voxels, then one 30 mm into them.
+  double pass = 0.0, hit = 0.0;
+  const Joint& joint = model_.joints()[static_cast<size_t>(joint_2_)];
+  for (double a = 0.0; a <= joint.upper; a += 0.002) {
+    if (MaxX(a) < face - 0.03) pass = a;
+    if (MaxX(a) > face + 0.03) {
+      hit = a;
+      break;
+    }
+  }
+  ASSERT_GT(hit, pass) << "the arm does not reach the wall";
+  std::vector<std::vector<double>> waypoints(3);
+  ASSERT_TRUE(world.Posture({}, &waypoints[0]).ok());
+  ASSERT_TRUE(world.Posture({{"joint_2", pass}}, &waypoints[1]).ok());
+  ASSERT_TRUE(world.Posture({{"joint_2", hit}}, &waypoints[2]).ok());
+  ClearanceOptions options;
+  Status status;
+  const std::vector<PostureClearance> c = world.Check(waypoints, options, &status);
+  ASSERT_TRUE(status.ok()) << status.message();
+  ASSERT_EQ(c.size(), 3u);
+  // As scanned: the distance to the voxels' face, not to the ghost.
+  EXPECT_FALSE(c[0].colliding) << c[0].collision_a << " with " << c[0].collision_b;
+  EXPECT_NEAR(c[0].distance_to_background, face - as_scanned, 1e-4);
+  EXPECT_LE(c[0].distance_to_background, wall - as_scanned);  // never longer than to the points
+  EXPECT_FALSE(c[1].colliding);
+  EXPECT_NEAR(c[1].distance_to_background, face - MaxX(pass), 1e-4);
+  EXPECT_TRUE(std::isinf(c[0].distance_to_machines));  // no other machine
+  // The hit: on waypoint 2, on the way there, where the arm truly reaches
+  // the face (within one step of the check).
+  ASSERT_TRUE(c[2].colliding);
+  EXPECT_EQ(c[2].collision_b, "background");
+  EXPECT_EQ(c[2].collision_a.rfind("robot_", 0), 0u) << c[2].collision_a;
+  double truth = 1.0;
+  for (double t = 0.0; t <= 1.0; t += 1e-3) {
+    if (MaxX(pass + t * (hit - pass)) >= face) {
+      truth = t;
+      break;
+    }
+  }
+  EXPECT_LT(truth, 1.0);
+  const double step = options.step_rad / (hit - pass);
+  EXPECT_NEAR(c[2].collision_fraction, truth, step + 1e-3);
+  EXPECT_NEAR(c[2].p_world_collision.x(), face, 1e-3);
+  EXPECT_EQ(c[2].distance_to_background, 0.0);
+
+  // Bad postures: one line.
+  std::vector<double> q;
+  EXPECT_NE(world.Posture({{"joint_9", 0.0}}, &q).message().find("joint 'joint_9': not a joint"),
+            std::string::npos);
+  EXPECT_NE(world.Posture({{"joint_2", 9.0}}, &q).message().find("outside its limits"),
+            std::string::npos);
+  ClearanceWorld other;
+  EXPECT_NE(other.Load((dir_ / "world").string(), "left", 1.0).message().find("no machine 'left' (the world holds: robot)"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace edgefit
