@@ -30,7 +30,8 @@ DEFINE_uint64(seed, 1, "Seed of every random choice; same seed and flags, same o
 DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (others 1).");
 DEFINE_string(labels, "",
               "Per-cell labels sidecar of a virtual scan (format: include/edgefit/scanner/"
-              "label_file.h): written by scan; read by edges to score against the true edges.");
+              "label_file.h): written by scan; read by edges to score against the true edges, and "
+              "by world to score its background against the true accessories and background.");
 DEFINE_string(out, "",
               "Output. scan: the scan, .ptx or .e57 (all scans in one file) or .pcd (one file per "
               "scan: F_0.pcd, ...); fit: result.json (base pose, every non-fixed joint, timing_s, "

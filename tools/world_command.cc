@@ -5,6 +5,9 @@
 #include <gflags/gflags.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -19,6 +22,10 @@
 #include "edgefit/io/scan_io.h"
 #include "edgefit/pipeline/attached_points.h"
 #include "edgefit/pipeline/model_points.h"
+#include "edgefit/scanner/label_file.h"
+#include "edgefit/scene/scene.h"
+#include "edgefit/world/attached_geometry.h"
+#include "edgefit/world/background_voxels.h"
 #include "edgefit/world/planning_world.h"
 #include "fit_result_file.h"
 
@@ -38,6 +45,79 @@ namespace edgefit::tools {
 namespace {
 
 using nlohmann::json;
+
+// The world's background against a virtual scan's labels (--labels): where
+// the accessories' points went (onto the machines' collision geometry, or
+// left in the background as their ghost), and how much of the true
+// background the machines took.
+class BackgroundTruth {
+ public:
+  // Reads the labels of `scans` (as read, before any point is removed).
+  Status Read(const std::string& path, const ScanSet& scans) {
+    LabelFile file;
+    EDGEFIT_RETURN_IF_ERROR(ReadLabels(path, &file));
+    if (file.labels.size() != scans.scans.size()) {
+      return Status::Error(path + ": labels of " + std::to_string(file.labels.size()) +
+                           " scans for " + std::to_string(scans.scans.size()));
+    }
+    labels_.resize(scans.scans.size());
+    for (size_t s = 0; s < scans.scans.size(); ++s) {
+      const OrganizedScan& scan = scans.scans[s];
+      if (file.labels[s].size() != scan.size()) {
+        return Status::Error(path + ": scan " + std::to_string(s) + "'s grid differs from the scan's");
+      }
+      labels_[s].assign(scan.size(), kLabelMissing);
+      for (size_t i = 0; i < scan.size(); ++i) {
+        if (scan.IsValid(i)) labels_[s][i] = file.labels[s][scan.FileIndex(i)] & kLabelMask;
+      }
+    }
+    return Status::Ok();
+  }
+
+  // After the machines' points left `scans` and the world was written.
+  Status Score(const ScanSet& scans, const std::string& tree, std::string* line) const {
+    std::vector<std::array<int32_t, 3>> voxels;
+    double voxel = 0.0;
+    const double inf = std::numeric_limits<double>::infinity();
+    EDGEFIT_RETURN_IF_ERROR(ReadBackgroundVoxels(
+        tree, Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-inf), Eigen::Vector3d::Constant(inf)),
+        &voxels, &voxel));
+    // [kind][taken, carved, kept]; kinds: background, accessory, machine.
+    size_t count[3][3] = {};
+    for (size_t s = 0; s < scans.scans.size(); ++s) {
+      const OrganizedScan& scan = scans.scans[s];
+      for (size_t i = 0; i < scan.size(); ++i) {
+        const uint16_t label = labels_[s][i];
+        if (label == kLabelMissing) continue;
+        const int kind = label == kLabelBackground ? 0 : label == kLabelAccessory ? 1 : 2;
+        int fate = 0;
+        if (scan.IsValid(i)) {
+          const Eigen::Vector3d p = scan.PointWorld(i);
+          const std::array<int32_t, 3> v = {static_cast<int32_t>(std::floor(p.x() / voxel)),
+                                            static_cast<int32_t>(std::floor(p.y() / voxel)),
+                                            static_cast<int32_t>(std::floor(p.z() / voxel))};
+          fate = std::binary_search(voxels.begin(), voxels.end(), v) ? 2 : 1;
+        }
+        ++count[kind][fate];
+      }
+    }
+    const auto share = [&](int kind, int fate) {
+      const size_t total = count[kind][0] + count[kind][1] + count[kind][2];
+      return total == 0 ? 0.0 : 100.0 * static_cast<double>(count[kind][fate]) / static_cast<double>(total);
+    };
+    char text[512];
+    std::snprintf(text, sizeof(text),
+                  "truth (--labels): accessory points %.2f %% on the machines (taken), %.2f %% "
+                  "carved, %.2f %% left in the background; machine points %.2f %% left in the "
+                  "background; background points %.3f %% taken by the machines, %.3f %% carved",
+                  share(1, 0), share(1, 1), share(1, 2), share(2, 2), share(0, 0), share(0, 1));
+    *line = text;
+    return Status::Ok();
+  }
+
+ private:
+  std::vector<std::vector<uint16_t>> labels_;  // per scan cell, kLabelMask'ed
+};
 
 int RunWorld(const Command& command) {
   const std::vector<std::string> results = SplitList(FLAGS_result);
@@ -59,6 +139,7 @@ int RunWorld(const Command& command) {
   std::vector<std::string> notes(results.size());
   std::vector<std::string> scan_inputs;  // the scans the fits read
   std::vector<double> removal(results.size());  // each machine's background distance [m]
+  std::vector<size_t> attached(results.size(), 0);  // points riding on each, off its CAD
   gflags::CommandLineFlagInfo distance_flag;
   const bool distance_given =
       gflags::GetCommandLineFlagInfo("background_distance_mm", &distance_flag) &&
@@ -114,8 +195,9 @@ int RunWorld(const Command& command) {
   }
   std::vector<Eigen::Vector3f> background;
   size_t removed = 0;
+  BackgroundTruth truth;  // with --labels
+  ScanSet scans;
   if (!scan_paths.empty()) {
-    ScanSet scans;
     ReadOptions read;
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadOptionsFromFlags(&read));
     for (const std::string& path : scan_paths) {
@@ -123,18 +205,35 @@ int RunWorld(const Command& command) {
     }
     Progress("world: the background, " + std::to_string(scans.TotalValid()) + " points less " +
              std::to_string(machines.size()) + " machines");
+    if (!FLAGS_labels.empty()) {
+      EDGEFIT_RETURN_IF_ERROR_EXIT(command, truth.Read(FLAGS_labels, scans));
+    }
     for (size_t i = 0; i < machines.size(); ++i) {
-      const WorldMachine& m = machines[i];
+      WorldMachine& m = machines[i];
       ModelPointsOptions options;
       options.distance = removal[i];
       std::vector<std::vector<uint8_t>> marks;
       EDGEFIT_RETURN_IF_ERROR_EXIT(
           command, MarkModelPoints(scans, *m.model, m.q, m.T_world_base, options, &marks));
       // And what rides on it off its CAD (dress packs, hoses, covers), as
-      // edgefit cell takes it: left in, the arm's ghost would be an obstacle.
+      // edgefit cell takes it: left in, the arm's ghost would be an obstacle;
+      // it becomes collision geometry of the links it rides on.
+      const std::vector<std::vector<uint8_t>> own = marks;
       EDGEFIT_RETURN_IF_ERROR_EXIT(command,
                                    MarkAttachedPoints(scans, *m.model, m.q, m.T_world_base,
                                                       AttachedPointsOptions(), &marks));
+      std::vector<Eigen::Vector3f> riding;
+      for (size_t s = 0; s < scans.scans.size(); ++s) {
+        for (size_t c = 0; c < marks[s].size(); ++c) {
+          if (marks[s][c] != 0 && own[s][c] == 0 && scans.scans[s].IsValid(c)) {
+            riding.push_back(scans.scans[s].PointWorld(c).cast<float>());
+          }
+        }
+      }
+      attached[i] = riding.size();
+      AttachedGeometryOptions attached_options;
+      attached_options.voxel = FLAGS_voxel_mm * 1e-3;
+      m.attached = AttachedGeometry(*m.model, m.q, m.T_world_base, riding, attached_options);
       removed += RemoveMarkedPoints(marks, &scans);
     }
     for (const OrganizedScan& scan : scans.scans) {
@@ -150,11 +249,16 @@ int RunWorld(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(
       command, WritePlanningWorld(machines, scan_paths.empty() ? nullptr : &background,
                                   background_options, FLAGS_out_dir, &written));
+  std::string truth_line;
+  if (!FLAGS_labels.empty() && !scan_paths.empty()) {
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, truth.Score(scans, FLAGS_out_dir + "/background.bt", &truth_line));
+  }
   for (size_t i = 0; i < machines.size(); ++i) {
     const WorldMachine& m = machines[i];
-    std::printf("%s: %s, %zu links, prefixed %s_, its points within %.1f mm%s\n", m.name.c_str(),
-                m.source.c_str(), m.model->links().size(), m.name.c_str(), 1e3 * removal[i],
-                notes[i].c_str());
+    std::printf("%s: %s, %zu links, prefixed %s_, its points within %.1f mm, %zu riding on it "
+                "off its CAD%s\n",
+                m.name.c_str(), m.source.c_str(), m.model->links().size(), m.name.c_str(),
+                1e3 * removal[i], attached[i], notes[i].c_str());
   }
   if (scan_paths.empty()) {
     std::printf("background: none (no --scan, and the results name no scans)\n");
@@ -163,6 +267,7 @@ int RunWorld(const Command& command) {
                 "background.ply, background.bt\n",
                 background.size(), removed, FLAGS_voxel_mm);
   }
+  if (!truth_line.empty()) std::printf("%s\n", truth_line.c_str());
   std::printf("world: %s (%zu files)\n", FLAGS_out_dir.c_str(), written.size());
   return 0;
 }
@@ -183,7 +288,7 @@ Command WorldCommand() {
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
           "  edgefit world --result=result.json --name=robot --out_dir=world\n"
           "  check_urdf world/cell.urdf",
-          {"result", "name", "scan", "camera_info", "depth_scale", "voxel_mm", "carve_mm",
+          {"result", "name", "scan", "camera_info", "depth_scale", "labels", "voxel_mm", "carve_mm",
            "background_distance_mm", "out_dir"},
           RunWorld};
 }

@@ -26,25 +26,31 @@ UrdfWriter::UrdfWriter(std::string robot_name, std::string comment, std::string 
     : name_(std::move(robot_name)), comment_(std::move(comment)), generator_(std::move(generator)) {}
 
 void UrdfWriter::AddLink(const std::string& name, const std::string& mesh_uri,
-                         const Eigen::Vector4d& rgba, bool collision) {
+                         const Eigen::Vector4d& rgba, bool collision,
+                         const std::vector<std::string>& extra_collision) {
   std::ostringstream os;
-  if (mesh_uri.empty()) {
+  if (mesh_uri.empty() && extra_collision.empty()) {
     os << "  <link name=\"" << name << "\"/>\n";
-  } else {
-    os << "  <link name=\"" << name << "\">\n"
-       << "    <visual>\n"
+    links_.push_back(os.str());
+    return;
+  }
+  os << "  <link name=\"" << name << "\">\n";
+  if (!mesh_uri.empty()) {
+    os << "    <visual>\n"
        << "      <geometry><mesh filename=\"" << mesh_uri << "\"/></geometry>\n"
        << "      <material name=\"" << name << "_material\"><color rgba=\""
        << FormatUrdfNumber(rgba[0]) << " " << FormatUrdfNumber(rgba[1]) << " "
        << FormatUrdfNumber(rgba[2]) << " " << FormatUrdfNumber(rgba[3]) << "\"/></material>\n"
        << "    </visual>\n";
-    if (collision) {
-      os << "    <collision>\n"
-         << "      <geometry><mesh filename=\"" << mesh_uri << "\"/></geometry>\n"
-         << "    </collision>\n";
-    }
-    os << "  </link>\n";
   }
+  std::vector<std::string> collisions = extra_collision;
+  if (collision && !mesh_uri.empty()) collisions.insert(collisions.begin(), mesh_uri);
+  for (const std::string& uri : collisions) {
+    os << "    <collision>\n"
+       << "      <geometry><mesh filename=\"" << uri << "\"/></geometry>\n"
+       << "    </collision>\n";
+  }
+  os << "  </link>\n";
   links_.push_back(os.str());
 }
 

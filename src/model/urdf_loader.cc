@@ -76,13 +76,15 @@ Status ParseWithUrdfdom(const std::string& xml, urdf::ModelInterfaceSharedPtr* u
   return Status::Ok();
 }
 
-Status LoadVisual(const urdf::Visual& urdf_visual, const std::string& urdf_path,
+// A <visual> or a <collision> (the same origin and geometry).
+template <typename Element>
+Status LoadVisual(const Element& urdf_visual, const std::string& urdf_path,
                   const ModelLoadOptions& options, const std::vector<std::string>& package_dirs,
                   std::map<std::string, TriangleMesh>* mesh_cache, Visual* visual,
                   TriangleMesh* link_mesh) {
   visual->T_link_visual = ToPose(urdf_visual.origin);
   const urdf::Geometry* geometry = urdf_visual.geometry.get();
-  if (geometry == nullptr) return Status::Error("visual without geometry");
+  if (geometry == nullptr) return Status::Error("a visual or collision without geometry");
   auto size_ok = [](double x) { return std::isfinite(x) && x > 0.0; };
   TriangleMesh mesh;
   switch (geometry->type) {
@@ -160,15 +162,22 @@ Status ParseModel(const std::string& xml, const std::string& urdf_path,
     Link link;
     link.name = link_name;
     link.source = urdf_path;
+    std::vector<urdf::CollisionSharedPtr> collisions = urdf_link->collision_array;
+    if (collisions.empty() && urdf_link->collision != nullptr) collisions.push_back(urdf_link->collision);
     std::vector<urdf::VisualSharedPtr> visuals = urdf_link->visual_array;
     if (visuals.empty() && urdf_link->visual != nullptr) visuals.push_back(urdf_link->visual);
-    for (const urdf::VisualSharedPtr& urdf_visual : visuals) {
-      Visual visual;
-      const Status status = LoadVisual(*urdf_visual, urdf_path, options, package_dirs,
-                                       &mesh_cache, &visual, &link.mesh);
-      if (!status.ok()) return status.WithContext("link '" + link_name + "'");
-      link.visuals.push_back(visual);
-    }
+    const auto load = [&](const auto& elements) -> Status {
+      for (const auto& element : elements) {
+        Visual visual;
+        const Status status = LoadVisual(*element, urdf_path, options, package_dirs, &mesh_cache,
+                                         &visual, &link.mesh);
+        if (!status.ok()) return status.WithContext("link '" + link_name + "'");
+        link.visuals.push_back(visual);
+      }
+      return Status::Ok();
+    };
+    EDGEFIT_RETURN_IF_ERROR(options.collision_geometry && !collisions.empty() ? load(collisions)
+                                                                              : load(visuals));
     out.mutable_links().push_back(std::move(link));
   }
   for (const std::string& joint_name : scan.joint_names) {

@@ -140,7 +140,14 @@ Status ReadBackgroundVoxels(const std::string& path, const Eigen::AlignedBox3d& 
   const auto point = [](const Eigen::Vector3d& p) {
     return octomap::point3d(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
   };
-  for (auto it = tree.begin_leafs_bbx(point(region.min()), point(region.max())),
+  // Within the tree's own bounds: octomap's keys do not reach far beyond.
+  double x0, y0, z0, x1, y1, z1;
+  tree.getMetricMin(x0, y0, z0);
+  tree.getMetricMax(x1, y1, z1);
+  const Eigen::AlignedBox3d within =
+      region.intersection(Eigen::AlignedBox3d(Eigen::Vector3d(x0, y0, z0), Eigen::Vector3d(x1, y1, z1)));
+  if (tree.size() == 0 || within.isEmpty()) return Status::Ok();
+  for (auto it = tree.begin_leafs_bbx(point(within.min()), point(within.max())),
             end = tree.end_leafs_bbx();
        it != end; ++it) {
     if (!tree.isNodeOccupied(*it)) continue;

@@ -109,7 +109,11 @@ Status ClearanceWorld::Load(const std::string& folder, const std::string& machin
   const fs::path dir(folder);
   if (!fs::is_directory(dir)) return Status::Error(folder + ": not a folder (an edgefit world)");
   EDGEFIT_RETURN_IF_ERROR(
-      LoadKinematicModel((dir / "cell.urdf").string(), ModelLoadOptions(), &w.cell));
+      LoadKinematicModel((dir / "cell.urdf").string(), [] {
+        ModelLoadOptions load;
+        load.collision_geometry = true;  // the links' meshes and what rides on them
+        return load;
+      }(), &w.cell));
   const KinematicModel& cell = w.cell;
   const int world = cell.root_link();
   int root = -1;

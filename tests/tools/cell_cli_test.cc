@@ -100,6 +100,16 @@ TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
       << world.out;
   EXPECT_TRUE(fs::exists(Path("world/background.bt")));
   EXPECT_TRUE(fs::exists(Path("world/background.ply")));
+  // Each arm as scanned is clear of everything: no ghost of its own points
+  // is left in its way.
+  for (const nlohmann::json& instance : r["instances"]) {
+    const RunResult c = Run("clearance --world=" + Path("world") + " --machine=" +
+                            instance["id"].get<std::string>() + " --json");
+    ASSERT_EQ(c.exit_code, 0) << c.err;
+    const nlohmann::json as_scanned = nlohmann::json::parse(c.out)["waypoints"][0];
+    EXPECT_FALSE(as_scanned["colliding"].get<bool>()) << c.out;
+    EXPECT_GT(as_scanned["distance_to_background"].get<double>(), 0.0) << c.out;
+  }
 }
 
 // --roi: the arms are looked for in the box around "a" only; "b" stays in

@@ -31,7 +31,7 @@ TEST_F(CliTest, WorldFromTwoResults) {
   const RunResult r = Run("world --result=" + left + "," + right + " --name=left,right --out_dir=" +
                           Path("world"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("right.json, 10 links, prefixed right_, its points within 8.0 mm (the fit "
+  EXPECT_NE(r.out.find("right.json, 10 links, prefixed right_, its points within 8.0 mm, 0 riding on it off its CAD (the fit "
                        "said not ok: joint_6 is ambiguous; placed as fitted)"),
             std::string::npos)
       << r.out;

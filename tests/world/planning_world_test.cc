@@ -18,6 +18,7 @@
 #include "edgefit/io/joint_states.h"
 #include "edgefit/io/scan_io.h"
 #include "edgefit/model/composition.h"
+#include "edgefit/model/primitive_meshes.h"
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/world/planning_world.h"
 
@@ -154,6 +155,37 @@ TEST_F(PlanningWorldTest, PlacesEveryLinkWhereTheFitDid) {
   } else {
     std::printf("check_urdf not installed: not run\n");
   }
+}
+
+// What rides on a link off its CAD is a second collision of that link:
+// loaded as collision geometry, the link holds both; as visual, its CAD.
+TEST_F(PlanningWorldTest, AttachedGeometryIsASecondCollisionOfItsLink) {
+  const int link_3 = model_.LinkIndex("link_3");
+  ASSERT_GE(link_3, 0);
+  machine_.attached.assign(model_.links().size(), TriangleMesh());
+  machine_.attached[static_cast<size_t>(link_3)] = MakeBoxMesh(Eigen::Vector3d(0.1, 0.2, 0.3));
+  const fs::path world = dir_ / "world";
+  ASSERT_TRUE(WritePlanningWorld({machine_}, nullptr, BackgroundOptions(), world.string(), nullptr).ok());
+  EXPECT_TRUE(fs::exists(world / "meshes/robot_left_link_3_attached.stl"));
+  ModelLoadOptions as_collision;
+  as_collision.collision_geometry = true;
+  KinematicModel visual, collision;
+  ASSERT_TRUE(LoadKinematicModel((world / "cell.urdf").string(), ModelLoadOptions(), &visual).ok());
+  ASSERT_TRUE(LoadKinematicModel((world / "cell.urdf").string(), as_collision, &collision).ok());
+  const int l = visual.LinkIndex("robot_left_link_3");
+  const size_t cad = model_.links()[static_cast<size_t>(link_3)].mesh.triangles.size();
+  EXPECT_EQ(visual.links()[static_cast<size_t>(l)].mesh.triangles.size(), cad);
+  EXPECT_EQ(collision.links()[static_cast<size_t>(l)].mesh.triangles.size(), cad + 12);
+  const int l2 = visual.LinkIndex("robot_left_link_2");
+  EXPECT_EQ(collision.links()[static_cast<size_t>(l2)].mesh.triangles.size(),
+            visual.links()[static_cast<size_t>(l2)].mesh.triangles.size());
+  // The wrong number of attached meshes: one line, nothing written.
+  machine_.attached.resize(2);
+  EXPECT_NE(WritePlanningWorld({machine_}, nullptr, BackgroundOptions(), (dir_ / "other").string(), nullptr)
+                .message()
+                .find("attached meshes for 2 links"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "other"));
 }
 
 TEST_F(PlanningWorldTest, ReplacesTheFolderWholeOrLeavesIt) {

@@ -40,10 +40,11 @@ class UrdfWriter {
   // A link whose visual is the mesh file `mesh_uri` (relative to the URDF)
   // at the link origin, or no visual when `mesh_uri` is empty (a frame).
   // `rgba` sets a named material colour for viewers; `collision`: the same
-  // mesh is the link's collision geometry too.
+  // mesh is the link's collision geometry too; `extra_collision`: more mesh
+  // files (relative to the URDF) of its collision geometry.
   void AddLink(const std::string& name, const std::string& mesh_uri,
                const Eigen::Vector4d& rgba = Eigen::Vector4d(0.7, 0.7, 0.7, 1.0),
-               bool collision = false);
+               bool collision = false, const std::vector<std::string>& extra_collision = {});
   void AddJoint(const UrdfJointSpec& joint);
   void AddLoopClosure(const LoopClosureSpec& closure);
 

@@ -22,6 +22,11 @@ struct ModelLoadOptions {
   // Load mesh files and tessellate primitives into Link::mesh. false leaves
   // the meshes empty (fast summaries); mesh paths are still resolved.
   bool load_meshes = true;
+  // Build Link::mesh (and Link::visuals) from the links' <collision>
+  // elements, as collision checkers do; a link without one takes its
+  // <visual> elements. false: the <visual> elements, the surface the fit
+  // matches to the scan.
+  bool collision_geometry = false;
   // Extra roots searched first for "package://pkg/..." as "<root>/pkg/...".
   std::vector<std::string> package_dirs;
   // Also search the directories listed in $ROS_PACKAGE_PATH (after

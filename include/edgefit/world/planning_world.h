@@ -9,7 +9,8 @@
 //                             machine's URDF gives them) and mimics; each
 //                             link's mesh as meshes/<name>_<link>.stl in its
 //                             link frame, referenced relative to the URDF,
-//                             as its visual and its collision;
+//                             as its visual and its collision, and what
+//                             rides on it off its CAD as a second collision;
 //   cell_frozen.urdf          the same with every joint fixed at its fitted
 //                             value (for consumers that cannot set joints);
 //   cell.srdf                 a group per machine (its moving joints), a
@@ -19,8 +20,9 @@
 //                             "Always", "Default");
 //   joint_states.yaml         sensor_msgs/JointState of every machine's
 //                             moving joints (prefixed names), as fitted;
-//   machines_as_scanned.ply   every machine's meshes posed at the fitted
-//                             values, world frame, metres;
+//   machines_as_scanned.ply   every machine's collision meshes (attachments
+//                             included) posed at the fitted values, world
+//                             frame, metres;
 //   background.ply, .bt       with background points (the scan less every
 //                             fitted machine): its occupied voxels, less
 //                             those the machines' meshes as scanned touch
@@ -49,6 +51,10 @@ struct WorldMachine {
   Pose T_world_base = Pose::Identity();   // the fitted base (root link) pose
   std::vector<double> q;                  // the fitted values, model order
   std::string source;                     // where it came from (a result.json), for messages
+  // What rides on each link off its CAD (AttachedGeometry; link frame):
+  // empty, or one mesh per link (empty where nothing rides). Written as
+  // meshes/<name>_<link>_attached.stl, a second <collision> of the link.
+  std::vector<TriangleMesh> attached;
 };
 
 // The machines' names and values as WritePlanningWorld checks them, for a
