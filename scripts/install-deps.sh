@@ -14,7 +14,7 @@ packages=(
   liburdfdom-dev liburdfdom-headers-dev libassimp-dev libnanoflann-dev
   libomp-dev libembree-dev nlohmann-json3-dev libfast-float-dev libtinyxml2-dev libpng-dev
   libyaml-cpp-dev liblzf-dev liboctomap-dev libfcl-dev
-  libgtest-dev libgmock-dev libbenchmark-dev liburdfdom-tools
+  libgtest-dev libgmock-dev libbenchmark-dev liburdfdom-tools python3-open3d
   clang libclang-rt-14-dev
   python3
 )
