@@ -11,6 +11,7 @@
 
 #include "edgefit/core/split_mix64.h"
 #include "edgefit/model/mesh_ply.h"
+#include "edgefit/world/moveit_scene.h"
 #include "fcl_mesh.h"
 
 namespace edgefit {
@@ -178,6 +179,9 @@ Status WriteBackground(const std::vector<Voxel>& voxels, const BackgroundOptions
       "edgefit world: the background's occupied voxels of " + std::to_string(options.voxel) +
           " m, outer faces, world frame"));
   names->push_back("background.ply");
+  EDGEFIT_RETURN_IF_ERROR(WriteMoveItScene(voxels, options.voxel, options.scene_tile, "edgefit_background",
+                                           folder + "/background.scene"));
+  names->push_back("background.scene");
   octomap::OcTree tree(options.voxel);
   for (const Voxel& v : voxels) {
     tree.updateNode(octomap::point3d(static_cast<float>((v[0] + 0.5) * options.voxel),

@@ -11,6 +11,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -276,9 +277,10 @@ TEST(BackgroundVoxelsTest, SurfaceAndOctreeHoldEveryPoint) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   BackgroundOptions options;
+  options.scene_tile = 10;  // 0.2 m tiles: several objects
   std::vector<std::string> names;
   ASSERT_TRUE(WriteBackground(OccupiedVoxels(points, options.voxel), options, dir.string(), &names).ok());
-  EXPECT_EQ(names, (std::vector<std::string>{"background.ply", "background.bt"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"background.ply", "background.scene", "background.bt"}));
   const TriangleMesh surface = VoxelUnionSurface(OccupiedVoxels(points, options.voxel), options.voxel);
   ExpectClosed(surface);
   octomap::OcTree tree((dir / "background.bt").string());
@@ -299,6 +301,47 @@ TEST(BackgroundVoxelsTest, SurfaceAndOctreeHoldEveryPoint) {
   for (const Eigen::Vector3f& p : points) around.extend(p.cast<double>());
   EXPECT_TRUE(read.contains(around));
   EXPECT_LT((read.sizes() - around.sizes()).maxCoeff(), 2 * options.voxel + 1e-9);
+
+  // background.scene as MoveIt's reader takes it: objects of one mesh each
+  // at the origin, every one closed, together the same voxels' faces less
+  // the tiles' shared ones.
+  std::ifstream scene(dir / "background.scene");
+  std::string name, marker;
+  ASSERT_TRUE(std::getline(scene, name));
+  EXPECT_EQ(name, "edgefit_background");
+  int objects = 0;
+  size_t triangles = 0;
+  Eigen::AlignedBox3d tiles;
+  tiles.setEmpty();
+  while (scene >> marker && marker == "*") {
+    std::string id, kind;
+    double pose[7], colour[4];
+    int shapes = 0, subframes = 0;
+    size_t v = 0, t = 0;
+    scene >> id;
+    for (double& x : pose) scene >> x;
+    scene >> shapes >> kind >> v >> t;
+    ASSERT_EQ(shapes, 1);
+    ASSERT_EQ(kind, "mesh");
+    TriangleMesh mesh;
+    mesh.vertices.resize(v);
+    mesh.triangles.resize(t);
+    for (Eigen::Vector3d& p : mesh.vertices) scene >> p.x() >> p.y() >> p.z();
+    for (Eigen::Vector3i& f : mesh.triangles) scene >> f[0] >> f[1] >> f[2];
+    for (double& x : pose) scene >> x;
+    for (double& x : colour) scene >> x;
+    scene >> subframes;
+    ASSERT_TRUE(scene.good()) << id;
+    EXPECT_EQ(subframes, 0);
+    ExpectClosed(mesh);
+    tiles.extend(mesh.BoundingBox(Pose::Identity()));
+    triangles += t;
+    ++objects;
+  }
+  EXPECT_EQ(marker, ".");
+  EXPECT_GT(objects, 4);
+  EXPECT_GE(triangles, surface.triangles.size());
+  EXPECT_TRUE(tiles.isApprox(surface.BoundingBox(Pose::Identity())));
   fs::remove_all(dir);
 }
 

@@ -4,6 +4,8 @@
 //                   (every edge shared by two faces, or four where voxels
 //                   meet along an edge) that hold every background point
 //                   inside, world frame, metres;
+//   background.scene  MoveIt's scene text of the same voxels, in tiles
+//                   (moveit_scene.h);
 //   background.bt   an OctoMap occupancy tree (liboctomap) at the same
 //                   resolution, each voxel marked occupied at its centre
 //                   (endpoints only, no ray casting: free space is not
@@ -31,6 +33,9 @@ struct BackgroundOptions {
   // (CarveVoxels): what is left there of the machine's own points would
   // block its first motion.
   double carve_margin = 0.02;
+  // background.scene's tiles, in voxels along each axis (moveit_scene.h):
+  // 100 voxels of 20 mm, 2 m.
+  int scene_tile = 100;
 };
 
 // The occupied voxels (integer cells, sorted, unique) of world points.
@@ -49,7 +54,7 @@ TriangleMesh VoxelUnionSurface(const std::vector<std::array<int32_t, 3>>& voxels
 size_t CarveVoxels(const TriangleMesh& mesh_world, double voxel, double margin,
                    std::vector<std::array<int32_t, 3>>* voxels);
 
-// Writes background.ply and background.bt of `voxels` (OccupiedVoxels, less
+// Writes background.ply, background.scene and background.bt of `voxels` (OccupiedVoxels, less
 // what was carved) into `folder` (an existing folder); appends their names
 // to *names.
 Status WriteBackground(const std::vector<std::array<int32_t, 3>>& voxels,
