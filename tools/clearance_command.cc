@@ -53,23 +53,10 @@ int RunClearance(const Command& command) {
   if (std::string error; !options.IsValid(&error)) {
     return BadInput(command, "--step_deg and --step_mm must be > 0");
   }
-  ClearanceWorld world;
-  std::string machine = FLAGS_machine;
-  if (machine.empty()) {
-    // The only machine, found by loading with a name no machine has.
-    ClearanceWorld probe;
-    const Status status = probe.Load(FLAGS_world, "", options.max_distance);
-    if (probe.machines().size() != 1) {
-      if (probe.machines().empty()) return BadInput(command, status);
-      std::string list;
-      for (const std::string& m : probe.machines()) list += (list.empty() ? "" : ", ") + m;
-      return BadInput(command, FLAGS_world + ": " + std::to_string(probe.machines().size()) +
-                                   " machines (" + list + "): name one with --machine");
-    }
-    machine = probe.machines()[0];
-  }
   Progress("clearance: loading " + FLAGS_world);
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, world.Load(FLAGS_world, machine, options.max_distance));
+  ClearanceWorld world;
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, world.Load(FLAGS_world, FLAGS_machine, options.max_distance));
+  const std::string& machine = world.machine();
 
   // The waypoints: the trajectory's rows, or one posture.
   std::vector<std::vector<double>> waypoints;

@@ -40,6 +40,7 @@ struct ClearanceWorld::Impl {
   KinematicModel cell;
   std::vector<double> q_scanned;
   std::vector<std::string> machines;
+  std::string machine;                         // the one checked
   std::string prefix;                          // "<machine>_"
   std::vector<std::unique_ptr<FclMesh>> meshes;  // per cell link; null without a mesh
   std::string background_path;                 // background.bt; empty: none
@@ -71,10 +72,15 @@ ClearanceWorld::ClearanceWorld() : impl_(std::make_unique<Impl>()) {}
 ClearanceWorld::~ClearanceWorld() = default;
 
 const std::vector<std::string>& ClearanceWorld::machines() const { return impl_->machines; }
-const std::vector<double>& ClearanceWorld::q_as_scanned() const { return impl_->q_scanned; }
-std::vector<std::string> ClearanceWorld::JointNames() const { return impl_->joint_names; }
+const std::string& ClearanceWorld::machine() const { return impl_->machine; }
 
 namespace {
+
+std::string Join(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
 
 // cell.srdf's <disable_collisions> pairs, as cell link indices (lower first).
 Status ReadDisabledPairs(const std::string& path, const KinematicModel& cell,
@@ -116,20 +122,27 @@ Status ClearanceWorld::Load(const std::string& folder, const std::string& machin
       }(), &w.cell));
   const KinematicModel& cell = w.cell;
   const int world = cell.root_link();
-  int root = -1;
+  std::vector<int> roots;
   for (const int j : cell.links()[static_cast<size_t>(world)].child_joints) {
     const std::string& name = cell.joints()[static_cast<size_t>(j)].name;
     if (name.rfind("world_to_", 0) != 0) continue;
     w.machines.push_back(name.substr(9));
-    if (w.machines.back() == machine) root = cell.joints()[static_cast<size_t>(j)].child_link;
+    roots.push_back(cell.joints()[static_cast<size_t>(j)].child_link);
   }
-  if (root < 0) {
-    std::string list;
-    for (const std::string& m : w.machines) list += (list.empty() ? "" : ", ") + m;
+  const std::string list = Join(w.machines);
+  const auto named = std::find(w.machines.begin(), w.machines.end(), machine);
+  if (machine.empty() && w.machines.size() != 1) {
+    return Status::Error(folder + ": " + std::to_string(w.machines.size()) + " machines (" + list +
+                         "): name the one to check");
+  }
+  if (!machine.empty() && named == w.machines.end()) {
     return Status::Error(folder + ": no machine '" + machine + "' (the world holds: " +
                          (list.empty() ? "none" : list) + ")");
   }
-  w.prefix = machine + "_";
+  const size_t index = machine.empty() ? 0 : static_cast<size_t>(named - w.machines.begin());
+  const int root = roots[index];
+  w.machine = w.machines[index];
+  w.prefix = w.machine + "_";
 
   // As scanned: joint_states.yaml's values.
   const std::string states_path = (dir / "joint_states.yaml").string();
@@ -210,7 +223,7 @@ Status ClearanceWorld::Posture(const std::vector<std::pair<std::string, double>>
       const int j = w.cell.JointIndex(w.prefix + name);
       return Status::Error("joint '" + name + "': " +
                            (j >= 0 ? "set by the joints it follows (mimic or loop closure)"
-                                   : "not a joint of this machine"));
+                                   : "not a joint of " + w.machine + " (" + Join(w.joint_names) + ")"));
     }
     const Joint& joint = w.cell.joints()[static_cast<size_t>(it->second)];
     if (!std::isfinite(value)) return Status::Error("joint '" + name + "': value not finite");

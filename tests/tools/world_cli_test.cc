@@ -79,7 +79,7 @@ TEST_F(CliTest, WorldFromTwoResults) {
   }
   EXPECT_TRUE(out["first_collision"].is_null());
   ExpectBadInput("clearance --world=" + Path("world") + " --joints=joint_2=0.1",
-                 "2 machines (left, right): name one with --machine");
+                 "2 machines (left, right): name the one to check");
   ExpectBadInput("clearance --world=" + Path("world") + " --machine=middle",
                  "no machine 'middle' (the world holds: left, right)");
   ExpectBadInput("clearance --world=" + Path("world") + " --machine=left --joints=joint_2=9",

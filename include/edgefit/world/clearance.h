@@ -73,27 +73,25 @@ class ClearanceWorld {
   ~ClearanceWorld();
 
   // Reads the world in `folder` and takes machine `machine` (an instance
-  // name: the links prefixed "<machine>_" under joint "world_to_<machine>").
-  // One line naming the file on a missing or unreadable file, and the
-  // machines there are for an unknown machine.
+  // name: the links prefixed "<machine>_" under joint "world_to_<machine>";
+  // empty: the world's only machine). One line naming the file on a missing
+  // or unreadable file, and the machines there are for an unknown machine
+  // or, with none named, several.
   // Distances to the background beyond `max_distance` [m]
   // (ClearanceOptions::max_distance) are reported as max_distance.
   Status Load(const std::string& folder, const std::string& machine, double max_distance);
 
-  // The machines of the world, in cell.urdf's order.
+  // The machines of the world, in cell.urdf's order, and the one checked.
   const std::vector<std::string>& machines() const;
-  // The machine's joints that a posture sets: its independent joints, by
-  // the names of its own URDF (without the prefix), parents first.
-  std::vector<std::string> JointNames() const;
+  const std::string& machine() const;
   // The cell's joint values (cell.urdf's order) with the machine's named
-  // joints at `values` [rad] or [m] and every other joint as scanned,
+  // joints (its independent joints, by the names of its own URDF, without
+  // the prefix) at `values` [rad] or [m] and every other joint as scanned,
   // dependent joints resolved. One line on an unknown or dependent joint, a
   // value not finite or outside the joint's limits, or a loop closure that
   // cannot be met.
   Status Posture(const std::vector<std::pair<std::string, double>>& values,
                  std::vector<double>* q_cell) const;
-  // The machine as scanned (Posture of no values).
-  const std::vector<double>& q_as_scanned() const;
 
   // One entry per waypoint (cell joint values from Posture), in order.
   // *status: one line when background.bt cannot be read.
