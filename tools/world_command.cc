@@ -22,11 +22,13 @@
 #include "edgefit/io/scan_io.h"
 #include "edgefit/pipeline/attached_points.h"
 #include "edgefit/pipeline/model_points.h"
+#include "edgefit/scan/mixed_pixels.h"
 #include "edgefit/scanner/label_file.h"
 #include "edgefit/scene/scene.h"
 #include "edgefit/world/attached_geometry.h"
 #include "edgefit/world/background_voxels.h"
 #include "edgefit/world/planning_world.h"
+#include "edgefit/world/floating_voxels.h"
 #include "fit_result_file.h"
 
 DECLARE_double(background_distance_mm);
@@ -36,6 +38,14 @@ DEFINE_double(voxel_mm, 20.0,
 DEFINE_double(carve_mm, 20.0,
               "world: the background's voxels within this of a machine as scanned are taken as "
               "free [mm]: what is left there of its own points would block its first motion.");
+DEFINE_bool(drop_mixed_pixels, true,
+            "world: mixed pixels (a beam that fell on two surfaces; scan/mixed_pixels.h) leave "
+            "the background: they float in free space, where a machine's silhouette left them "
+            "as its ghost.");
+DEFINE_double(floating_mm, 300.0,
+              "world: pieces of the background (26-connected voxels) wholly within this of a "
+              "machine's links, standing on nothing, leave it [mm]: what is left there of the "
+              "machine would be its ghost (include/edgefit/world/floating_voxels.h); 0: kept.");
 DEFINE_string(name, "",
               "world: the machines' instance names, in --result's order (comma list); default: "
               "each URDF's robot name, or the result file's name where robots repeat. Every link "
@@ -68,7 +78,7 @@ class BackgroundTruth {
       }
       labels_[s].assign(scan.size(), kLabelMissing);
       for (size_t i = 0; i < scan.size(); ++i) {
-        if (scan.IsValid(i)) labels_[s][i] = file.labels[s][scan.FileIndex(i)] & kLabelMask;
+        if (scan.IsValid(i)) labels_[s][i] = file.labels[s][scan.FileIndex(i)];
       }
     }
     return Status::Ok();
@@ -82,13 +92,17 @@ class BackgroundTruth {
     EDGEFIT_RETURN_IF_ERROR(ReadBackgroundVoxels(
         tree, Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-inf), Eigen::Vector3d::Constant(inf)),
         &voxels, &voxel));
-    // [kind][taken, carved, kept]; kinds: background, accessory, machine.
+    // [kind][taken, carved or floating, kept]; kinds: background surface,
+    // accessory, machine.
     size_t count[3][3] = {};
     for (size_t s = 0; s < scans.scans.size(); ++s) {
       const OrganizedScan& scan = scans.scans[s];
       for (size_t i = 0; i < scan.size(); ++i) {
-        const uint16_t label = labels_[s][i];
-        if (label == kLabelMissing) continue;
+        const uint16_t label = labels_[s][i] & kLabelMask;
+        // A background mixed pixel is no surface: it leaves the background.
+        if (label == kLabelMissing || (label == kLabelBackground && (labels_[s][i] & kMixedPixelFlag))) {
+          continue;
+        }
         const int kind = label == kLabelBackground ? 0 : label == kLabelAccessory ? 1 : 2;
         int fate = 0;
         if (scan.IsValid(i)) {
@@ -108,8 +122,9 @@ class BackgroundTruth {
     char text[512];
     std::snprintf(text, sizeof(text),
                   "truth (--labels): accessory points %.2f %% on the machines (taken), %.2f %% "
-                  "carved, %.2f %% left in the background; machine points %.2f %% left in the "
-                  "background; background points %.3f %% taken by the machines, %.3f %% carved",
+                  "carved or floating, %.2f %% left in the background; machine points %.2f %% left in the "
+                  "background; background surface points %.3f %% taken by the machines or as mixed pixels, "
+                  "%.3f %% carved or floating",
                   share(1, 0), share(1, 1), share(1, 2), share(2, 2), share(0, 0), share(0, 1));
     *line = text;
     return Status::Ok();
@@ -195,6 +210,8 @@ int RunWorld(const Command& command) {
   }
   std::vector<Eigen::Vector3f> background;
   size_t removed = 0;
+  size_t mixed = 0;  // mixed pixels left out of the background
+  std::pair<size_t, size_t> left_floating = {0, 0};  // voxels and points floating beside machines
   BackgroundTruth truth;  // with --labels
   ScanSet scans;
   if (!scan_paths.empty()) {
@@ -208,6 +225,10 @@ int RunWorld(const Command& command) {
     if (!FLAGS_labels.empty()) {
       EDGEFIT_RETURN_IF_ERROR_EXIT(command, truth.Read(FLAGS_labels, scans));
     }
+    // Mixed pixels lie between two surfaces, in free space: found on the
+    // whole grids (a machine's silhouette included), left out at the end.
+    std::vector<std::vector<uint8_t>> mixed_marks;
+    if (FLAGS_drop_mixed_pixels) mixed_marks = FindMixedPixels(scans, MixedPixelOptions(), &mixed);
     for (size_t i = 0; i < machines.size(); ++i) {
       WorldMachine& m = machines[i];
       ModelPointsOptions options;
@@ -236,10 +257,27 @@ int RunWorld(const Command& command) {
       m.attached = AttachedGeometry(*m.model, m.q, m.T_world_base, riding, attached_options);
       removed += RemoveMarkedPoints(marks, &scans);
     }
+    if (FLAGS_drop_mixed_pixels) mixed = RemoveMarkedPoints(mixed_marks, &scans);
     for (const OrganizedScan& scan : scans.scans) {
       for (size_t i = 0; i < scan.size(); ++i) {
         if (scan.IsValid(i)) background.push_back(scan.PointWorld(i).cast<float>());
       }
+    }
+    if (FLAGS_floating_mm > 0.0) {
+      // What is left of the machines beside them, standing on nothing.
+      const double voxel = FLAGS_voxel_mm * 1e-3;
+      const std::vector<std::array<int32_t, 3>> floating =
+          FloatingVoxels(machines, OccupiedVoxels(background, voxel), voxel, FLAGS_floating_mm * 1e-3);
+      const auto in_floating = [&](const Eigen::Vector3f& p) {
+        const std::array<int32_t, 3> v = {static_cast<int32_t>(std::floor(p.x() / voxel)),
+                                          static_cast<int32_t>(std::floor(p.y() / voxel)),
+                                          static_cast<int32_t>(std::floor(p.z() / voxel))};
+        return std::binary_search(floating.begin(), floating.end(), v);
+      };
+      const size_t before = background.size();
+      background.erase(std::remove_if(background.begin(), background.end(), in_floating),
+                       background.end());
+      left_floating = {floating.size(), before - background.size()};
     }
   }
   BackgroundOptions background_options;
@@ -263,9 +301,11 @@ int RunWorld(const Command& command) {
   if (scan_paths.empty()) {
     std::printf("background: none (no --scan, and the results name no scans)\n");
   } else {
-    std::printf("background: %zu points (%zu of the machines removed) in %.0f mm voxels: "
-                "background.ply, background.bt\n",
-                background.size(), removed, FLAGS_voxel_mm);
+    std::printf("background: %zu points (%zu of the machines removed, %zu mixed pixels and %zu "
+                "points in %zu voxels floating beside them left out) in %.0f mm voxels: "
+                "background.ply, background.scene, background.bt\n",
+                background.size(), removed, mixed, left_floating.second, left_floating.first,
+                FLAGS_voxel_mm);
   }
   if (!truth_line.empty()) std::printf("%s\n", truth_line.c_str());
   std::printf("world: %s (%zu files)\n", FLAGS_out_dir.c_str(), written.size());
@@ -288,7 +328,7 @@ Command WorldCommand() {
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"
           "  edgefit world --result=result.json --name=robot --out_dir=world\n"
           "  check_urdf world/cell.urdf",
-          {"result", "name", "scan", "camera_info", "depth_scale", "labels", "voxel_mm", "carve_mm",
+          {"result", "name", "scan", "camera_info", "depth_scale", "labels", "voxel_mm", "carve_mm", "drop_mixed_pixels", "floating_mm",
            "background_distance_mm", "out_dir"},
           RunWorld};
 }

@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "edgefit/model/urdf_loader.h"
+#include "edgefit/world/background_voxels.h"
 #include "edgefit/world/clearance.h"
+#include "edgefit/world/floating_voxels.h"
 #include "edgefit/world/planning_world.h"
 
 namespace edgefit {
@@ -140,6 +142,60 @@ TEST_F(ClearanceTest, WallAtAKnownDistance) {
   ClearanceWorld other;
   EXPECT_NE(other.Load((dir_ / "world").string(), "left", 1.0).message().find("no machine 'left' (the world holds: robot)"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace edgefit
+
+namespace edgefit {
+namespace {
+
+// Pieces of the background beside a machine: one floating alone beside the
+// arm leaves; one standing on the floor beside it, and one floating far
+// from it, stay.
+TEST(FloatingVoxelsTest, OnlyWhatFloatsBesideAMachineLeaves) {
+  KinematicModel model;
+  ASSERT_TRUE(LoadKinematicModel(std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/robot.urdf",
+                                 ModelLoadOptions(), &model)
+                  .ok());
+  WorldMachine machine;
+  machine.name = "robot";
+  machine.model = &model;
+  machine.q = model.ZeroJoints();
+  ASSERT_TRUE(model.ResolveDependentJoints(&machine.q).ok());
+  const Eigen::AlignedBox3d arm = model.BoundingBox(machine.q);
+  const double v = kVoxel;
+  std::vector<Eigen::Vector3f> points;
+  const auto blob = [&](const Eigen::Vector3d& at, int n) {
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) points.push_back((at + Eigen::Vector3d(i, j, 0) * 0.5 * v).cast<float>());
+    }
+  };
+  // 0.1 m beyond the arm's farthest point along +x.
+  Eigen::Vector3d beside = Eigen::Vector3d::Constant(-1e9);
+  const std::vector<Pose> T = model.ForwardKinematics(machine.q);
+  for (size_t l = 0; l < model.links().size(); ++l) {
+    for (const Eigen::Vector3d& p : model.links()[l].mesh.vertices) {
+      if ((T[l] * p).x() > beside.x()) beside = T[l] * p;
+    }
+  }
+  beside.x() += 0.1;
+  blob(beside, 4);                                              // floats beside the arm
+  // A post beside it on a floor that reaches beyond.
+  for (double z = 0.0; z <= arm.center().z(); z += 0.5 * v) {
+    points.emplace_back(static_cast<float>(arm.min().x() - 0.1), static_cast<float>(arm.center().y()),
+                        static_cast<float>(z));
+  }
+  for (double x = arm.min().x() - 1.0; x <= arm.min().x() - 0.1; x += 0.5 * v) {
+    points.emplace_back(static_cast<float>(x), static_cast<float>(arm.center().y()), 0.0f);
+  }
+  blob(Eigen::Vector3d(arm.max().x() + 3.0, 0.0, 1.0), 4);      // floats far away
+  const std::vector<std::array<int32_t, 3>> voxels = OccupiedVoxels(points, v);
+  const std::vector<std::array<int32_t, 3>> floating = FloatingVoxels({machine}, voxels, v, 0.3);
+  const std::vector<std::array<int32_t, 3>> alone = OccupiedVoxels(
+      std::vector<Eigen::Vector3f>(points.begin(), points.begin() + 16), v);
+  EXPECT_EQ(floating, alone);
+  EXPECT_GT(voxels.size(), alone.size() + 10);
 }
 
 }  // namespace
