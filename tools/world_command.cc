@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -20,15 +20,11 @@
 #include "common_flags.h"
 #include "edgefit/core/atomic_file.h"
 #include "edgefit/io/scan_io.h"
-#include "edgefit/pipeline/attached_points.h"
-#include "edgefit/pipeline/model_points.h"
-#include "edgefit/scan/mixed_pixels.h"
 #include "edgefit/scanner/label_file.h"
 #include "edgefit/scene/scene.h"
-#include "edgefit/world/attached_geometry.h"
 #include "edgefit/world/background_voxels.h"
 #include "edgefit/world/planning_world.h"
-#include "edgefit/world/floating_voxels.h"
+#include "edgefit/world/world_background.h"
 #include "fit_result_file.h"
 
 DECLARE_double(background_distance_mm);
@@ -154,7 +150,6 @@ int RunWorld(const Command& command) {
   std::vector<std::string> notes(results.size());
   std::vector<std::string> scan_inputs;  // the scans the fits read
   std::vector<double> removal(results.size());  // each machine's background distance [m]
-  std::vector<size_t> attached(results.size(), 0);  // points riding on each, off its CAD
   gflags::CommandLineFlagInfo distance_flag;
   const bool distance_given =
       gflags::GetCommandLineFlagInfo("background_distance_mm", &distance_flag) &&
@@ -209,9 +204,7 @@ int RunWorld(const Command& command) {
     }
   }
   std::vector<Eigen::Vector3f> background;
-  size_t removed = 0;
-  size_t mixed = 0;  // mixed pixels left out of the background
-  std::pair<size_t, size_t> left_floating = {0, 0};  // voxels and points floating beside machines
+  WorldBackgroundSummary summary;
   BackgroundTruth truth;  // with --labels
   ScanSet scans;
   if (!scan_paths.empty()) {
@@ -225,60 +218,12 @@ int RunWorld(const Command& command) {
     if (!FLAGS_labels.empty()) {
       EDGEFIT_RETURN_IF_ERROR_EXIT(command, truth.Read(FLAGS_labels, scans));
     }
-    // Mixed pixels lie between two surfaces, in free space: found on the
-    // whole grids (a machine's silhouette included), left out at the end.
-    std::vector<std::vector<uint8_t>> mixed_marks;
-    if (FLAGS_drop_mixed_pixels) mixed_marks = FindMixedPixels(scans, MixedPixelOptions(), &mixed);
-    for (size_t i = 0; i < machines.size(); ++i) {
-      WorldMachine& m = machines[i];
-      ModelPointsOptions options;
-      options.distance = removal[i];
-      std::vector<std::vector<uint8_t>> marks;
-      EDGEFIT_RETURN_IF_ERROR_EXIT(
-          command, MarkModelPoints(scans, *m.model, m.q, m.T_world_base, options, &marks));
-      // And what rides on it off its CAD (dress packs, hoses, covers), as
-      // edgefit cell takes it: left in, the arm's ghost would be an obstacle;
-      // it becomes collision geometry of the links it rides on.
-      const std::vector<std::vector<uint8_t>> own = marks;
-      EDGEFIT_RETURN_IF_ERROR_EXIT(command,
-                                   MarkAttachedPoints(scans, *m.model, m.q, m.T_world_base,
-                                                      AttachedPointsOptions(), &marks));
-      std::vector<Eigen::Vector3f> riding;
-      for (size_t s = 0; s < scans.scans.size(); ++s) {
-        for (size_t c = 0; c < marks[s].size(); ++c) {
-          if (marks[s][c] != 0 && own[s][c] == 0 && scans.scans[s].IsValid(c)) {
-            riding.push_back(scans.scans[s].PointWorld(c).cast<float>());
-          }
-        }
-      }
-      attached[i] = riding.size();
-      AttachedGeometryOptions attached_options;
-      attached_options.voxel = FLAGS_voxel_mm * 1e-3;
-      m.attached = AttachedGeometry(*m.model, m.q, m.T_world_base, riding, attached_options);
-      removed += RemoveMarkedPoints(marks, &scans);
-    }
-    if (FLAGS_drop_mixed_pixels) mixed = RemoveMarkedPoints(mixed_marks, &scans);
-    for (const OrganizedScan& scan : scans.scans) {
-      for (size_t i = 0; i < scan.size(); ++i) {
-        if (scan.IsValid(i)) background.push_back(scan.PointWorld(i).cast<float>());
-      }
-    }
-    if (FLAGS_floating_mm > 0.0) {
-      // What is left of the machines beside them, standing on nothing.
-      const double voxel = FLAGS_voxel_mm * 1e-3;
-      const std::vector<std::array<int32_t, 3>> floating =
-          FloatingVoxels(machines, OccupiedVoxels(background, voxel), voxel, FLAGS_floating_mm * 1e-3);
-      const auto in_floating = [&](const Eigen::Vector3f& p) {
-        const std::array<int32_t, 3> v = {static_cast<int32_t>(std::floor(p.x() / voxel)),
-                                          static_cast<int32_t>(std::floor(p.y() / voxel)),
-                                          static_cast<int32_t>(std::floor(p.z() / voxel))};
-        return std::binary_search(floating.begin(), floating.end(), v);
-      };
-      const size_t before = background.size();
-      background.erase(std::remove_if(background.begin(), background.end(), in_floating),
-                       background.end());
-      left_floating = {floating.size(), before - background.size()};
-    }
+    WorldBackgroundOptions options;
+    options.voxel = FLAGS_voxel_mm * 1e-3;
+    options.drop_mixed_pixels = FLAGS_drop_mixed_pixels;
+    options.floating = FLAGS_floating_mm * 1e-3;
+    EDGEFIT_RETURN_IF_ERROR_EXIT(
+        command, WorldBackground(removal, options, &scans, &machines, &background, &summary));
   }
   BackgroundOptions background_options;
   background_options.voxel = FLAGS_voxel_mm * 1e-3;
@@ -296,7 +241,8 @@ int RunWorld(const Command& command) {
     std::printf("%s: %s, %zu links, prefixed %s_, its points within %.1f mm, %zu riding on it "
                 "off its CAD%s\n",
                 m.name.c_str(), m.source.c_str(), m.model->links().size(), m.name.c_str(),
-                1e3 * removal[i], attached[i], notes[i].c_str());
+                1e3 * removal[i], summary.riding.empty() ? size_t{0} : summary.riding[i],
+                notes[i].c_str());
   }
   if (scan_paths.empty()) {
     std::printf("background: none (no --scan, and the results name no scans)\n");
@@ -304,8 +250,8 @@ int RunWorld(const Command& command) {
     std::printf("background: %zu points (%zu of the machines removed, %zu mixed pixels and %zu "
                 "points in %zu voxels floating beside them left out) in %.0f mm voxels: "
                 "background.ply, background.scene, background.bt\n",
-                background.size(), removed, mixed, left_floating.second, left_floating.first,
-                FLAGS_voxel_mm);
+                background.size(), summary.machine_points, summary.mixed_pixels,
+                summary.floating_points, summary.floating_voxels, FLAGS_voxel_mm);
   }
   if (!truth_line.empty()) std::printf("%s\n", truth_line.c_str());
   std::printf("world: %s (%zu files)\n", FLAGS_out_dir.c_str(), written.size());
