@@ -103,9 +103,7 @@ class BackgroundTruth {
         int fate = 0;
         if (scan.IsValid(i)) {
           const Eigen::Vector3d p = scan.PointWorld(i);
-          const std::array<int32_t, 3> v = {static_cast<int32_t>(std::floor(p.x() / voxel)),
-                                            static_cast<int32_t>(std::floor(p.y() / voxel)),
-                                            static_cast<int32_t>(std::floor(p.z() / voxel))};
+          const std::array<int32_t, 3> v = VoxelOf(p, voxel);
           fate = std::binary_search(voxels.begin(), voxels.end(), v) ? 2 : 1;
         }
         ++count[kind][fate];

@@ -46,9 +46,7 @@ std::vector<Voxel> OccupiedVoxels(const std::vector<Eigen::Vector3f>& points, do
   std::vector<Voxel> voxels;
   voxels.reserve(points.size());
   for (const Eigen::Vector3f& p : points) {
-    voxels.push_back({static_cast<int32_t>(std::floor(p.x() / voxel)),
-                      static_cast<int32_t>(std::floor(p.y() / voxel)),
-                      static_cast<int32_t>(std::floor(p.z() / voxel))});
+    voxels.push_back(VoxelOf(p, voxel));
   }
   std::sort(voxels.begin(), voxels.end());
   voxels.erase(std::unique(voxels.begin(), voxels.end()), voxels.end());

@@ -55,10 +55,7 @@ Status WorldBackground(const std::vector<double>& removal, const WorldBackground
     const std::vector<std::array<int32_t, 3>> floating =
         FloatingVoxels(*machines, OccupiedVoxels(*background, v), v, options.floating);
     const auto in_floating = [&](const Eigen::Vector3f& p) {
-      const std::array<int32_t, 3> cell = {static_cast<int32_t>(std::floor(p.x() / v)),
-                                           static_cast<int32_t>(std::floor(p.y() / v)),
-                                           static_cast<int32_t>(std::floor(p.z() / v))};
-      return std::binary_search(floating.begin(), floating.end(), cell);
+      return std::binary_search(floating.begin(), floating.end(), VoxelOf(p, v));
     };
     const size_t before = background->size();
     background->erase(std::remove_if(background->begin(), background->end(), in_floating), background->end());

@@ -17,6 +17,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,13 @@ struct BackgroundOptions {
   // 100 voxels of 20 mm, 2 m.
   int scene_tile = 100;
 };
+
+// The voxel (integer cell) that holds world point p.
+template <typename Point>
+std::array<int32_t, 3> VoxelOf(const Point& p, double voxel) {
+  return {static_cast<int32_t>(std::floor(p.x() / voxel)), static_cast<int32_t>(std::floor(p.y() / voxel)),
+          static_cast<int32_t>(std::floor(p.z() / voxel))};
+}
 
 // The occupied voxels (integer cells, sorted, unique) of world points.
 std::vector<std::array<int32_t, 3>> OccupiedVoxels(const std::vector<Eigen::Vector3f>& points,
