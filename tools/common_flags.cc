@@ -31,7 +31,7 @@ DEFINE_double(w_high, 10.0, "Eq. (6): weight of points in valid edge regions (ot
 DEFINE_string(labels, "",
               "Per-cell labels sidecar of a virtual scan (format: include/edgefit/scanner/"
               "label_file.h): written by scan; read by edges to score against the true edges, and "
-              "by world to score its background against the true accessories and background.");
+              "by world to score the written world against the truth (include/edgefit/world/world_truth.h).");
 DEFINE_string(out, "",
               "Output. scan: the scan, .ptx or .e57 (all scans in one file) or .pcd (one file per "
               "scan: F_0.pcd, ...); fit: result.json (base pose, every non-fixed joint, timing_s, "

@@ -5,10 +5,8 @@
 #include <gflags/gflags.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -22,9 +20,9 @@
 #include "edgefit/io/scan_io.h"
 #include "edgefit/scanner/label_file.h"
 #include "edgefit/scene/scene.h"
-#include "edgefit/world/background_voxels.h"
 #include "edgefit/world/planning_world.h"
 #include "edgefit/world/world_background.h"
+#include "edgefit/world/world_truth.h"
 #include "fit_result_file.h"
 
 DECLARE_double(background_distance_mm);
@@ -52,81 +50,49 @@ namespace {
 
 using nlohmann::json;
 
-// The world's background against a virtual scan's labels (--labels): where
-// the accessories' points went (onto the machines' collision geometry, or
-// left in the background as their ghost), and how much of the true
-// background the machines took.
-class BackgroundTruth {
- public:
-  // Reads the labels of `scans` (as read, before any point is removed).
-  Status Read(const std::string& path, const ScanSet& scans) {
-    LabelFile file;
-    EDGEFIT_RETURN_IF_ERROR(ReadLabels(path, &file));
-    if (file.labels.size() != scans.scans.size()) {
-      return Status::Error(path + ": labels of " + std::to_string(file.labels.size()) +
-                           " scans for " + std::to_string(scans.scans.size()));
-    }
-    labels_.resize(scans.scans.size());
-    for (size_t s = 0; s < scans.scans.size(); ++s) {
-      const OrganizedScan& scan = scans.scans[s];
-      if (file.labels[s].size() != scan.size()) {
-        return Status::Error(path + ": scan " + std::to_string(s) + "'s grid differs from the scan's");
-      }
-      labels_[s].assign(scan.size(), kLabelMissing);
-      for (size_t i = 0; i < scan.size(); ++i) {
-        if (scan.IsValid(i)) labels_[s][i] = file.labels[s][scan.FileIndex(i)];
-      }
-    }
-    return Status::Ok();
+// The labelled surface points of `scans` (as read, before any point is
+// removed) from a virtual scan's label file (--labels).
+Status ReadTruthPoints(const std::string& path, const ScanSet& scans, TruthPoints* truth) {
+  LabelFile file;
+  EDGEFIT_RETURN_IF_ERROR(ReadLabels(path, &file));
+  if (file.labels.size() != scans.scans.size()) {
+    return Status::Error(path + ": labels of " + std::to_string(file.labels.size()) + " scans for " +
+                         std::to_string(scans.scans.size()));
   }
-
-  // After the machines' points left `scans` and the world was written.
-  Status Score(const ScanSet& scans, const std::string& tree, std::string* line) const {
-    std::vector<std::array<int32_t, 3>> voxels;
-    double voxel = 0.0;
-    const double inf = std::numeric_limits<double>::infinity();
-    EDGEFIT_RETURN_IF_ERROR(ReadBackgroundVoxels(
-        tree, Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-inf), Eigen::Vector3d::Constant(inf)),
-        &voxels, &voxel));
-    // [kind][taken, carved or floating, kept]; kinds: background surface,
-    // accessory, machine.
-    size_t count[3][3] = {};
-    for (size_t s = 0; s < scans.scans.size(); ++s) {
-      const OrganizedScan& scan = scans.scans[s];
-      for (size_t i = 0; i < scan.size(); ++i) {
-        const uint16_t label = labels_[s][i] & kLabelMask;
-        // A background mixed pixel is no surface: it leaves the background.
-        if (label == kLabelMissing || (label == kLabelBackground && (labels_[s][i] & kMixedPixelFlag))) {
-          continue;
-        }
-        const int kind = label == kLabelBackground ? 0 : label == kLabelAccessory ? 1 : 2;
-        int fate = 0;
-        if (scan.IsValid(i)) {
-          const Eigen::Vector3d p = scan.PointWorld(i);
-          const std::array<int32_t, 3> v = VoxelOf(p, voxel);
-          fate = std::binary_search(voxels.begin(), voxels.end(), v) ? 2 : 1;
-        }
-        ++count[kind][fate];
-      }
+  for (size_t s = 0; s < scans.scans.size(); ++s) {
+    const OrganizedScan& scan = scans.scans[s];
+    if (file.labels[s].size() != scan.size()) {
+      return Status::Error(path + ": scan " + std::to_string(s) + "'s grid differs from the scan's");
     }
-    const auto share = [&](int kind, int fate) {
-      const size_t total = count[kind][0] + count[kind][1] + count[kind][2];
-      return total == 0 ? 0.0 : 100.0 * static_cast<double>(count[kind][fate]) / static_cast<double>(total);
-    };
-    char text[512];
-    std::snprintf(text, sizeof(text),
-                  "truth (--labels): accessory points %.2f %% on the machines (taken), %.2f %% "
-                  "carved or floating, %.2f %% left in the background; machine points %.2f %% left in the "
-                  "background; background surface points %.3f %% taken by the machines or as mixed pixels, "
-                  "%.3f %% carved or floating",
-                  share(1, 0), share(1, 1), share(1, 2), share(2, 2), share(0, 0), share(0, 1));
-    *line = text;
-    return Status::Ok();
+    for (size_t i = 0; i < scan.size(); ++i) {
+      if (!scan.IsValid(i)) continue;
+      const uint16_t label = file.labels[s][scan.FileIndex(i)];
+      if ((label & kLabelMask) == kLabelMissing || (label & kMixedPixelFlag)) continue;
+      truth->points.push_back(scan.PointWorld(i).cast<float>());
+      truth->kinds.push_back((label & kLabelMask) == kLabelBackground  ? TruthKind::kBackground
+                             : (label & kLabelMask) == kLabelAccessory ? TruthKind::kAccessory
+                                                                       : TruthKind::kMachine);
+    }
   }
+  return Status::Ok();
+}
 
- private:
-  std::vector<std::vector<uint16_t>> labels_;  // per scan cell, kLabelMask'ed
-};
+// The truth's measures as one line.
+std::string TruthLine(const WorldTruthScore& score, const WorldTruthOptions& options) {
+  char text[768];
+  std::snprintf(text, sizeof(text),
+                "truth (--labels, mixed pixels left out): background points within %.0f mm of "
+                "background.ply %.2f %%; machine and accessory points inside it or within %.0f mm "
+                "%.2f %%; machine points within %.0f mm of machines_as_scanned.ply %.2f %%, accessory "
+                "points within %.0f mm %.2f %%; background points farther than %.0f mm from the "
+                "machines' within %.0f mm of it %.3f %% (%zu background, %zu machine, %zu accessory points)",
+                1e3 * options.background_reach, 100.0 * score.background_covered, 1e3 * options.ghost_reach,
+                100.0 * score.machines_in_background, 1e3 * options.machine_reach, 100.0 * score.machine_covered,
+                1e3 * options.accessory_reach, 100.0 * score.accessory_covered, 1e3 * options.far,
+                1e3 * options.far_reach, 100.0 * score.far_background_on_machines, score.background,
+                score.machine, score.accessory);
+  return text;
+}
 
 int RunWorld(const Command& command) {
   const std::vector<std::string> results = SplitList(FLAGS_result);
@@ -203,7 +169,7 @@ int RunWorld(const Command& command) {
   }
   std::vector<Eigen::Vector3f> background;
   WorldBackgroundSummary summary;
-  BackgroundTruth truth;  // with --labels
+  TruthPoints truth;  // with --labels
   ScanSet scans;
   if (!scan_paths.empty()) {
     ReadOptions read;
@@ -214,7 +180,7 @@ int RunWorld(const Command& command) {
     Progress("world: the background, " + std::to_string(scans.TotalValid()) + " points less " +
              std::to_string(machines.size()) + " machines");
     if (!FLAGS_labels.empty()) {
-      EDGEFIT_RETURN_IF_ERROR_EXIT(command, truth.Read(FLAGS_labels, scans));
+      EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadTruthPoints(FLAGS_labels, scans, &truth));
     }
     WorldBackgroundOptions options;
     options.voxel = FLAGS_voxel_mm * 1e-3;
@@ -232,7 +198,10 @@ int RunWorld(const Command& command) {
                                   background_options, FLAGS_out_dir, &written));
   std::string truth_line;
   if (!FLAGS_labels.empty() && !scan_paths.empty()) {
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, truth.Score(scans, FLAGS_out_dir + "/background.bt", &truth_line));
+    WorldTruthScore score;
+    const WorldTruthOptions options;
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, ScoreWorldTruth(truth, FLAGS_out_dir, options, &score));
+    truth_line = TruthLine(score, options);
   }
   for (size_t i = 0; i < machines.size(); ++i) {
     const WorldMachine& m = machines[i];
@@ -266,7 +235,7 @@ Command WorldCommand() {
           "background.ply (closed voxel mesh) and background.bt (OctoMap)",
           "Usage:\n"
           "  edgefit world --result=R.json[,R2.json] [--name=N[,N2]] [--scan=F,...] [--voxel_mm=20]\n"
-          "                [--carve_mm=20]\n"
+          "                [--carve_mm=20] [--labels=L.bin: the virtual scan's truth, scored]\n"
           "                [--background_distance_mm=8] [--camera_info=C.yaml] --out_dir=DIR\n"
           "Example:\n"
           "  edgefit fit --urdf=assets/robot/robot.urdf --scan=robot.ptx --out=result.json\n"

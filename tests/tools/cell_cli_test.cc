@@ -44,7 +44,7 @@ class CellCliE2eTest : public CellCliTest {};
 TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
   const RunResult scan = Run("scan --scene=" + Scene() +
                              " --scanners=3 --spacing_mm=6 --seed=3 --out=" + Path("cell.e57") +
-                             " --truth=" + Path("truth.json"));
+                             " --truth=" + Path("truth.json") + " --labels=" + Path("labels.bin"));
   ASSERT_EQ(scan.exit_code, 0) << scan.err;
   const nlohmann::json truth = nlohmann::json::parse(Slurp(Path("truth.json")));
   ASSERT_EQ(truth["assets"].size(), 3u);
@@ -88,7 +88,8 @@ TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
   // The instances' results (their inputs name the model) make a world.
   const RunResult world =
       Run("world --result=" + r["instances"][0]["result"].get<std::string>() + "," +
-          r["instances"][1]["result"].get<std::string>() + " --out_dir=" + Path("world"));
+          r["instances"][1]["result"].get<std::string>() + " --out_dir=" + Path("world") +
+          " --labels=" + Path("labels.bin"));
   ASSERT_EQ(world.exit_code, 0) << world.err;
   // Two of one robot: named by their results (the instances' ids).
   const std::string id = r["instances"][1]["id"].get<std::string>();
@@ -108,6 +109,23 @@ TEST_F(CellCliE2eTest, FindsBothArmsAndWritesTheBackground) {
   EXPECT_LT(mixed + floating, r["background"]["points"].get<size_t>() / 100);
   EXPECT_TRUE(fs::exists(Path("world/background.bt")));
   EXPECT_TRUE(fs::exists(Path("world/background.ply")));
+  // Against the labels: the true background kept, none of it taken by the
+  // arms (world_truth.h; "other", not found, stays background).
+  const size_t truth_line = world.out.find("truth (");
+  ASSERT_NE(truth_line, std::string::npos) << world.out;
+  double covered = 0, ghosts = 0, machine = 0, accessory = 0, far_taken = 0;
+  ASSERT_EQ(std::sscanf(world.out.c_str() + truth_line,
+                        "truth (--labels, mixed pixels left out): background points within 30 mm of "
+                        "background.ply %lf %%; machine and accessory points inside it or within 10 mm "
+                        "%lf %%; machine points within 10 mm of machines_as_scanned.ply %lf %%, "
+                        "accessory points within 30 mm %lf %%; background points farther than 100 mm "
+                        "from the machines' within 10 mm of it %lf %%",
+                        &covered, &ghosts, &machine, &accessory, &far_taken),
+            5)
+      << world.out;
+  EXPECT_GT(covered, 99.0) << world.out;
+  EXPECT_GT(machine, 50.0) << world.out;
+  EXPECT_LT(far_taken, 0.1) << world.out;
   // Each arm as scanned is clear of everything: no ghost of its own points
   // is left in its way.
   for (const nlohmann::json& instance : r["instances"]) {

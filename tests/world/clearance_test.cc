@@ -2,7 +2,8 @@
 // robot before a wall of points at a known place. The distance to the wall
 // as scanned, a waypoint that passes it and one that hits it (on the right
 // waypoint, at the right place on the way), and the robot's own ghost
-// (points on its surface left in the background) carved away.
+// (points on its surface left in the background) carved away. The world's
+// truth measures at their thresholds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "edgefit/world/clearance.h"
 #include "edgefit/world/floating_voxels.h"
 #include "edgefit/world/planning_world.h"
+#include "edgefit/world/world_truth.h"
 
 namespace edgefit {
 namespace {
@@ -53,6 +55,17 @@ class ClearanceTest : public ::testing::Test {
     return x;
   }
 
+  // The robot as scanned before `points`, in dir_/world.
+  Status WriteWorld(const std::vector<Eigen::Vector3f>& points) const {
+    WorldMachine machine;
+    machine.name = "robot";
+    machine.model = &model_;
+    machine.q = q_;
+    BackgroundOptions background;
+    background.voxel = kVoxel;
+    return WritePlanningWorld({machine}, &points, background, (dir_ / "world").string(), nullptr);
+  }
+
   fs::path dir_;
   KinematicModel model_;
   int joint_2_ = -1;
@@ -76,13 +89,7 @@ TEST_F(ClearanceTest, WallAtAKnownDistance) {
       points.push_back((T[l] * v).cast<float>());
     }
   }
-  WorldMachine machine;
-  machine.name = "robot";
-  machine.model = &model_;
-  machine.q = q_;
-  BackgroundOptions background;
-  background.voxel = kVoxel;
-  ASSERT_TRUE(WritePlanningWorld({machine}, &points, background, (dir_ / "world").string(), nullptr).ok());
+  ASSERT_TRUE(WriteWorld(points).ok());
 
   ClearanceWorld world;
   ASSERT_TRUE(world.Load((dir_ / "world").string(), "robot", 1.0).ok());
@@ -141,6 +148,56 @@ TEST_F(ClearanceTest, WallAtAKnownDistance) {
             std::string::npos);
   ClearanceWorld other;
   EXPECT_NE(other.Load((dir_ / "world").string(), "left", 1.0).message().find("no machine 'left' (the world holds: robot)"),
+            std::string::npos);
+}
+
+// The world's truth measures (world_truth.h), exact at their thresholds:
+// points just inside and just outside each reach of the files' surfaces.
+TEST_F(ClearanceTest, TruthMeasuresAtTheirThresholds) {
+  const double face = std::ceil((MaxX(0.0) + 0.15) / kVoxel) * kVoxel;
+  const double wall = face + 0.5 * kVoxel;
+  std::vector<Eigen::Vector3f> points;
+  for (double y = -3.0; y <= 3.0; y += 0.01) {
+    for (double z = 0.0; z <= 3.0; z += 0.01) points.emplace_back(wall, y, z);
+  }
+  ASSERT_TRUE(WriteWorld(points).ok());
+  // The robot's highest and lowest surface points.
+  const std::vector<Pose> T = model_.ForwardKinematics(q_);
+  Eigen::Vector3d top(0, 0, -1e9), bottom(0, 0, 1e9);
+  for (size_t l = 0; l < model_.links().size(); ++l) {
+    for (const Eigen::Vector3d& v : model_.links()[l].mesh.vertices) {
+      const Eigen::Vector3d w = T[l] * v;
+      if (w.z() > top.z()) top = w;
+      if (w.z() < bottom.z()) bottom = w;
+    }
+  }
+  TruthPoints truth;
+  const auto add = [&](const Eigen::Vector3d& p, TruthKind kind) {
+    truth.points.push_back(p.cast<float>());
+    truth.kinds.push_back(kind);
+  };
+  for (int i = 0; i < 100; ++i) add({wall, -0.01 * i, 1.0}, TruthKind::kBackground);   // on the wall
+  add({face - 0.029, 0.5, 1.0}, TruthKind::kBackground);                                // 29 mm before it
+  add({face - 0.031, 0.5, 1.0}, TruthKind::kBackground);                                // 31 mm
+  add(bottom, TruthKind::kBackground);  // on the robot, far from its points: taken
+  add(top + Eigen::Vector3d(0, 0, 0.0099), TruthKind::kMachine);
+  add(top + Eigen::Vector3d(0, 0, 0.0101), TruthKind::kMachine);
+  add({wall, 2.5, 2.5}, TruthKind::kMachine);  // a machine point in the wall: a ghost
+  add(top + Eigen::Vector3d(0, 0, 0.0299), TruthKind::kAccessory);
+  add(top + Eigen::Vector3d(0, 0, 0.0301), TruthKind::kAccessory);
+  WorldTruthScore score;
+  ASSERT_TRUE(ScoreWorldTruth(truth, (dir_ / "world").string(), WorldTruthOptions(), &score).ok());
+  EXPECT_EQ(score.background, 103u);
+  EXPECT_EQ(score.machine, 3u);
+  EXPECT_EQ(score.accessory, 2u);
+  EXPECT_DOUBLE_EQ(score.background_covered, 101.0 / 103.0);
+  EXPECT_DOUBLE_EQ(score.machines_in_background, 1.0 / 5.0);
+  EXPECT_DOUBLE_EQ(score.machine_covered, 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(score.accessory_covered, 1.0 / 2.0);
+  EXPECT_EQ(score.far_background, 103u);
+  EXPECT_DOUBLE_EQ(score.far_background_on_machines, 1.0 / 103.0);
+  // A world folder without its files: an error naming the file.
+  EXPECT_NE(ScoreWorldTruth(truth, (dir_ / "none").string(), WorldTruthOptions(), &score).message().find("background.bt"),
             std::string::npos);
 }
 
