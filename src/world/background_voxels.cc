@@ -53,6 +53,22 @@ std::vector<Voxel> OccupiedVoxels(const std::vector<Eigen::Vector3f>& points, do
   return voxels;
 }
 
+namespace {
+// The rectangle a b d e on a plane `axis` = const, its corners in the order
+// (u, w) = (0, 0), (1, 0), (1, 1), (0, 1) of the other axes u = axis + 1,
+// w = axis + 2, as two triangles facing `side` (u x w = +axis: counter-
+// clockwise from outside when side > 0).
+void AddFace(int a, int b, int d, int e, int side, TriangleMesh* mesh) {
+  if (side > 0) {
+    mesh->triangles.emplace_back(a, b, d);
+    mesh->triangles.emplace_back(a, d, e);
+  } else {
+    mesh->triangles.emplace_back(a, d, b);
+    mesh->triangles.emplace_back(a, e, d);
+  }
+}
+}  // namespace
+
 TriangleMesh VoxelUnionSurface(const std::vector<Voxel>& voxels, double voxel) {
   TriangleMesh mesh;
   struct CornerHash {
@@ -85,16 +101,65 @@ TriangleMesh VoxelUnionSurface(const std::vector<Voxel>& voxels, double voxel) {
         c11[static_cast<size_t>(u)] += 1;
         c11[static_cast<size_t>(w)] += 1;
         c01[static_cast<size_t>(w)] += 1;
-        const int a = corner(c00), b = corner(c10), d = corner(c11), e = corner(c01);
-        if (side > 0) {  // u x w = +axis: a b d e counter-clockwise from outside
-          mesh.triangles.emplace_back(a, b, d);
-          mesh.triangles.emplace_back(a, d, e);
-        } else {
-          mesh.triangles.emplace_back(a, d, b);
-          mesh.triangles.emplace_back(a, e, d);
-        }
+        AddFace(corner(c00), corner(c10), corner(c11), corner(c01), side, &mesh);
       }
     }
+  }
+  return mesh;
+}
+
+TriangleMesh VoxelUnionRectangles(const std::vector<Voxel>& voxels, double voxel) {
+  // Exposed faces as (axis, side, plane, w, u): the face on plane `axis` =
+  // plane, facing `side`, covering cell (u, w) of the two other axes.
+  using Face = std::array<int32_t, 5>;
+  std::vector<Face> faces;
+  for (const Voxel& v : voxels) {
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const int side : {-1, 1}) {
+        Voxel neighbour = v;
+        neighbour[static_cast<size_t>(axis)] += side;
+        if (Contains(voxels, neighbour)) continue;
+        const size_t u = static_cast<size_t>((axis + 1) % 3), w = static_cast<size_t>((axis + 2) % 3);
+        faces.push_back({axis, side, v[static_cast<size_t>(axis)] + (side > 0 ? 1 : 0), v[w], v[u]});
+      }
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  // Rows: runs of consecutive u, as (axis, side, plane, u0, u1, w).
+  using Row = std::array<int32_t, 6>;
+  std::vector<Row> rows;
+  for (size_t i = 0; i < faces.size();) {
+    size_t end = i + 1;
+    while (end < faces.size() && std::equal(faces[end].begin(), faces[end].begin() + 4, faces[i].begin()) &&
+           faces[end][4] == faces[end - 1][4] + 1) {
+      ++end;
+    }
+    rows.push_back({faces[i][0], faces[i][1], faces[i][2], faces[i][4], faces[end - 1][4] + 1, faces[i][3]});
+    i = end;
+  }
+  // Rectangles: runs of consecutive w among rows of the same extent.
+  std::sort(rows.begin(), rows.end());
+  TriangleMesh mesh;
+  for (size_t i = 0; i < rows.size();) {
+    size_t end = i + 1;
+    while (end < rows.size() && std::equal(rows[end].begin(), rows[end].begin() + 5, rows[i].begin()) &&
+           rows[end][5] == rows[end - 1][5] + 1) {
+      ++end;
+    }
+    const int axis = rows[i][0], side = rows[i][1];
+    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+    const auto corner = [&](int32_t cu, int32_t cw) {
+      Eigen::Vector3d c;
+      c[axis] = rows[i][2] * voxel;
+      c[u] = cu * voxel;
+      c[w] = cw * voxel;
+      mesh.vertices.push_back(c);
+      return static_cast<int>(mesh.vertices.size()) - 1;
+    };
+    const int32_t w0 = rows[i][5], w1 = rows[end - 1][5] + 1;
+    AddFace(corner(rows[i][3], w0), corner(rows[i][4], w0), corner(rows[i][4], w1), corner(rows[i][3], w1), side,
+            &mesh);
+    i = end;
   }
   return mesh;
 }

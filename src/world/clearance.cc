@@ -1,7 +1,5 @@
 #include "edgefit/world/clearance.h"
 
-#include <tinyxml2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -21,19 +19,13 @@ namespace edgefit {
 namespace fs = std::filesystem;
 
 bool ClearanceOptions::IsValid(std::string* error) const {
-  if (!(step_rad > 0.0) || !std::isfinite(step_rad)) {
-    *error = "step_rad must be > 0";
-    return false;
-  }
-  if (!(step_m > 0.0) || !std::isfinite(step_m)) {
-    *error = "step_m must be > 0";
-    return false;
-  }
-  if (!(max_distance > 0.0) || !std::isfinite(max_distance)) {
-    *error = "max_distance must be > 0";
-    return false;
-  }
-  return true;
+  const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
+  const char* bad = !positive(step_rad)       ? "step_rad must be > 0"
+                    : !positive(step_m)       ? "step_m must be > 0"
+                    : !positive(max_distance) ? "max_distance must be > 0"
+                                              : nullptr;
+  if (bad != nullptr) *error = bad;
+  return bad == nullptr;
 }
 
 struct ClearanceWorld::Impl {
@@ -45,11 +37,10 @@ struct ClearanceWorld::Impl {
   std::vector<std::unique_ptr<FclMesh>> meshes;  // per cell link; null without a mesh
   std::string background_path;                 // background.bt; empty: none
   struct Sphere {
-    int link;
-    Eigen::Vector3d centre;  // link frame [m]
-    double radius;           // [m], around the link's mesh
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // link frame [m]
+    double radius = 0.0;                               // [m], around the link's mesh
   };
-  std::vector<Sphere> spheres;                 // of the moving links
+  std::vector<Sphere> spheres;                 // per cell link
   double max_distance = 0.0;                   // [m] the background's distances are capped at
   std::vector<int> moving;                     // machine links with meshes that move off its base
   std::vector<int> own;                        // machine links with meshes
@@ -61,9 +52,17 @@ struct ClearanceWorld::Impl {
   std::vector<std::string> joint_names;
 
   const std::string& LinkName(int l) const { return cell.links()[static_cast<size_t>(l)].name; }
+  // The last posture measured on a thread: its links' poses and distances,
+  // which bound the next posture's (how far its links moved added).
+  struct Previous {
+    std::vector<Pose> T;
+    PostureClearance clearance;
+  };
   // Distances at one posture; with `first_only`, stops at the first contact.
-  PostureClearance Measure(const std::vector<double>& q, bool first_only,
-                           const FclMesh* background) const;
+  // `previous` (may be null; not with first_only): read, then set to this
+  // posture.
+  PostureClearance Measure(const std::vector<double>& q, bool first_only, const FclMesh* background,
+                           Previous* previous = nullptr) const;
   // The box the moving links' spheres sweep over the states.
   Eigen::AlignedBox3d Reach(const std::vector<std::vector<double>>& states) const;
 };
@@ -75,38 +74,11 @@ const std::vector<std::string>& ClearanceWorld::machines() const { return impl_-
 const std::string& ClearanceWorld::machine() const { return impl_->machine; }
 
 namespace {
-
 std::string Join(const std::vector<std::string>& names) {
   std::string list;
   for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
   return list;
 }
-
-// cell.srdf's <disable_collisions> pairs, as cell link indices (lower first).
-Status ReadDisabledPairs(const std::string& path, const KinematicModel& cell,
-                         std::set<std::pair<int, int>>* pairs) {
-  tinyxml2::XMLDocument doc;
-  if (doc.LoadFile(path.c_str()) != tinyxml2::XML_SUCCESS) {
-    return Status::Error(path + ": cannot read it as XML (" + std::string(doc.ErrorStr()) + ")");
-  }
-  const tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
-  if (robot == nullptr) return Status::Error(path + ": no <robot> element");
-  for (const tinyxml2::XMLElement* e = robot->FirstChildElement("disable_collisions"); e != nullptr;
-       e = e->NextSiblingElement("disable_collisions")) {
-    const char* a = e->Attribute("link1");
-    const char* b = e->Attribute("link2");
-    const int la = a == nullptr ? -1 : cell.LinkIndex(a);
-    const int lb = b == nullptr ? -1 : cell.LinkIndex(b);
-    if (la < 0 || lb < 0) {
-      return Status::Error(path + ": disable_collisions names a link that cell.urdf lacks ('" +
-                           std::string(a == nullptr ? "" : a) + "', '" +
-                           std::string(b == nullptr ? "" : b) + "')");
-    }
-    pairs->insert({std::min(la, lb), std::max(la, lb)});
-  }
-  return Status::Ok();
-}
-
 }  // namespace
 
 Status ClearanceWorld::Load(const std::string& folder, const std::string& machine,
@@ -158,7 +130,7 @@ Status ClearanceWorld::Load(const std::string& folder, const std::string& machin
     return Status::Error(states_path + ": " + s.message());
   }
   std::set<std::pair<int, int>> disabled;
-  EDGEFIT_RETURN_IF_ERROR(ReadDisabledPairs((dir / "cell.srdf").string(), cell, &disabled));
+  EDGEFIT_RETURN_IF_ERROR(ReadDisabledCollisionPairs((dir / "cell.srdf").string(), cell, &disabled));
 
   // The machine's links: the subtree under its base; which move off it.
   std::vector<bool> in_machine(cell.links().size(), false), fixed_to_base(cell.links().size(), false);
@@ -202,12 +174,13 @@ Status ClearanceWorld::Load(const std::string& folder, const std::string& machin
   }
   // The background: background.bt, read by Check where the postures reach.
   if (fs::exists(dir / "background.bt")) w.background_path = (dir / "background.bt").string();
-  for (const int l : w.moving) {
-    const TriangleMesh& mesh = cell.links()[static_cast<size_t>(l)].mesh;
-    const Eigen::Vector3d centre = mesh.BoundingBox(Pose::Identity()).center();
-    double radius = 0.0;
-    for (const Eigen::Vector3d& v : mesh.vertices) radius = std::max(radius, (v - centre).norm());
-    w.spheres.push_back({l, centre, radius});
+  w.spheres.resize(cell.links().size());
+  for (size_t l = 0; l < cell.links().size(); ++l) {
+    const TriangleMesh& mesh = cell.links()[l].mesh;
+    if (mesh.empty()) continue;
+    Impl::Sphere& s = w.spheres[l];
+    s.centre = mesh.BoundingBox(Pose::Identity()).center();
+    for (const Eigen::Vector3d& v : mesh.vertices) s.radius = std::max(s.radius, (v - s.centre).norm());
   }
   w.max_distance = max_distance;
   return Status::Ok();
@@ -240,8 +213,9 @@ Eigen::AlignedBox3d ClearanceWorld::Impl::Reach(const std::vector<std::vector<do
   Eigen::AlignedBox3d box;
   for (const std::vector<double>& q : states) {
     const std::vector<Pose> T = cell.ForwardKinematics(q);
-    for (const Sphere& s : spheres) {
-      const Eigen::Vector3d c = T[static_cast<size_t>(s.link)] * s.centre;
+    for (const int l : moving) {
+      const Sphere& s = spheres[static_cast<size_t>(l)];
+      const Eigen::Vector3d c = T[static_cast<size_t>(l)] * s.centre;
       box.extend(c - Eigen::Vector3d::Constant(s.radius));
       box.extend(c + Eigen::Vector3d::Constant(s.radius));
     }
@@ -250,35 +224,102 @@ Eigen::AlignedBox3d ClearanceWorld::Impl::Reach(const std::vector<std::vector<do
 }
 
 PostureClearance ClearanceWorld::Impl::Measure(const std::vector<double>& q, bool first_only,
-                                               const FclMesh* background) const {
+                                               const FclMesh* background, Previous* previous) const {
   PostureClearance c;
   const std::vector<Pose> T = cell.ForwardKinematics(q);
-  const auto pose = [&](int l) -> const Pose& { return T[static_cast<size_t>(l)]; };
-  const auto mesh = [&](int l) -> const FclMesh& { return *meshes[static_cast<size_t>(l)]; };
-  // Takes d for *slot; the first contact names the pair. True to stop.
-  const auto take = [&](double* slot, int a, int b, const FclMesh& mb, const Pose& Tb) {
-    const double d = first_only ? (mesh(a).Collides(pose(a), mb, Tb) ? 0.0 : PostureClearance::kNone)
-                                : mesh(a).Distance(pose(a), mb, Tb);
-    *slot = std::min(*slot, d);
-    if (d > 0.0 || c.colliding) return false;
-    c.colliding = true;
-    mesh(a).Collides(pose(a), mb, Tb, &c.p_world_collision);
-    c.collision_a = LinkName(a);
-    c.collision_b = b < 0 ? "background" : LinkName(b);
-    return first_only;
-  };
-  if (!background_path.empty()) c.distance_to_background = max_distance;
-  if (background != nullptr) {
-    for (const int l : moving) {
-      if (take(&c.distance_to_background, l, -1, *background, Pose::Identity())) return c;
+  // How far any point of the machine's links moved since the previous
+  // posture: each least distance is at most the previous one plus this
+  // (twice, between two of its links), where the search starts.
+  double moved = PostureClearance::kNone;
+  if (previous != nullptr && !previous->T.empty()) {
+    moved = 0.0;
+    for (const int l : own) {
+      const Pose& a = T[static_cast<size_t>(l)];
+      const Pose& b = previous->T[static_cast<size_t>(l)];
+      const Sphere& s = spheres[static_cast<size_t>(l)];
+      const double turn = Eigen::AngleAxisd(a.linear() * b.linear().transpose()).angle();
+      moved = std::max(moved, (a * s.centre - b * s.centre).norm() + turn * s.radius);
     }
   }
-  for (const auto& [l, o, To] : others) {
-    if (take(&c.distance_to_machines, l, o, mesh(o), To)) return c;
+  const auto start = [&](double last, double factor) {
+    return std::isfinite(moved) && std::isfinite(last) ? last + factor * moved : PostureClearance::kNone;
+  };
+  const auto pose = [&](int l) -> const Pose& { return T[static_cast<size_t>(l)]; };
+  const auto mesh = [&](int l) -> const FclMesh& { return *meshes[static_cast<size_t>(l)]; };
+  // A pair: link a as posed, and b (a link, or the background: -1) with its
+  // mesh and pose; `bound`: the least distance their spheres allow.
+  struct Pair {
+    double bound;
+    int a, b;
+    const FclMesh* mb;
+    const Pose* Tb;
+  };
+  const auto sphere_bound = [&](int a, int b, const Pose& Tb) {
+    const Sphere& sa = spheres[static_cast<size_t>(a)];
+    const Sphere& sb = spheres[static_cast<size_t>(b)];
+    return std::max(0.0, (pose(a) * sa.centre - Tb * sb.centre).norm() - sa.radius - sb.radius);
+  };
+  // Takes the pair's distance (sought below `limit`) for *slot; the first
+  // contact names the pair.
+  const auto take = [&](double* slot, const Pair& p, double limit) {
+    const double d = first_only ? (mesh(p.a).Collides(pose(p.a), *p.mb, *p.Tb) ? 0.0 : PostureClearance::kNone)
+                                : mesh(p.a).Distance(pose(p.a), *p.mb, *p.Tb, limit);
+    if (d < limit) *slot = d;
+    if (d > 0.0 || c.colliding) return;
+    c.colliding = true;
+    mesh(p.a).Collides(pose(p.a), *p.mb, *p.Tb, &c.p_world_collision);
+    c.collision_a = LinkName(p.a);
+    c.collision_b = p.b < 0 ? "background" : LinkName(p.b);
+  };
+  // The least distance over `pairs` for *slot, nearest spheres first, in
+  // passes whose cap grows 4-fold from 1 cm (or the hint: a bound on the
+  // least distance): a pass seeks each pair's
+  // distance only below the cap (or the least found), which FCL prunes at
+  // once where the pair is farther, and the search ends with a pass that
+  // finds one below its cap, or the pass without a cap. With first_only:
+  // the first contact, and true when there is one.
+  const auto least = [&](double* slot, std::vector<Pair>* pairs, double hint) {
+    std::sort(pairs->begin(), pairs->end(),
+              [](const Pair& x, const Pair& y) { return std::tie(x.bound, x.a, x.b) < std::tie(y.bound, y.a, y.b); });
+    if (first_only) {
+      for (const Pair& p : *pairs) {
+        if (p.bound > 0.0) break;
+        take(slot, p, std::numeric_limits<double>::min());
+        if (c.colliding) return true;
+      }
+      return false;
+    }
+    constexpr double kFirstCap = 0.01, kLastCap = 1e3;  // [m]
+    for (double cap = std::isfinite(hint) ? std::max(hint, 1e-9) : kFirstCap;; cap *= 4.0) {
+      const bool last = cap >= *slot || cap > kLastCap;  // seeking below the least found
+      for (const Pair& p : *pairs) {
+        const double limit = last ? *slot : std::min(*slot, cap);
+        if (p.bound >= limit) break;
+        take(slot, p, limit);
+      }
+      if (last || *slot < cap) return false;
+    }
+  };
+  const Pose identity = Pose::Identity();
+  std::vector<Pair> pairs;
+  if (!background_path.empty()) c.distance_to_background = max_distance;
+  if (background != nullptr) {
+    for (const int l : moving) pairs.push_back({0.0, l, -1, background, &identity});
+    if (least(&c.distance_to_background, &pairs,
+              previous ? start(previous->clearance.distance_to_background, 1.0) : PostureClearance::kNone)) {
+      return c;
+    }
   }
-  for (const auto& [a, b] : self_pairs) {
-    if (take(&c.self_distance, a, b, mesh(b), pose(b))) return c;
+  pairs.clear();
+  for (const auto& [l, o, To] : others) pairs.push_back({sphere_bound(l, o, To), l, o, &mesh(o), &To});
+  if (least(&c.distance_to_machines, &pairs,
+            previous ? start(previous->clearance.distance_to_machines, 1.0) : PostureClearance::kNone)) {
+    return c;
   }
+  pairs.clear();
+  for (const auto& [a, b] : self_pairs) pairs.push_back({sphere_bound(a, b, pose(b)), a, b, &mesh(b), &pose(b)});
+  least(&c.self_distance, &pairs, previous ? start(previous->clearance.self_distance, 2.0) : PostureClearance::kNone);
+  if (previous != nullptr) *previous = {T, c};
   return c;
 }
 
@@ -323,12 +364,22 @@ std::vector<PostureClearance> ClearanceWorld::Check(const std::vector<std::vecto
       double voxel = 0.0;
       *status = ReadBackgroundVoxels(w.background_path, region, &voxels, &voxel);
       if (!status->ok()) return {};
-      if (!voxels.empty()) background = std::make_unique<FclMesh>(VoxelUnionSurface(voxels, voxel));
+      if (!voxels.empty()) background = std::make_unique<FclMesh>(VoxelUnionRectangles(voxels, voxel));
     }
   }
-  std::vector<PostureClearance> out;
-  for (size_t k = 0; k < waypoints.size(); ++k) {
-    PostureClearance at = w.Measure(waypoints[k], /*first_only=*/false, background.get());
+  // The waypoints in runs, one per thread (FCL's queries only read); each
+  // thread's previous waypoint bounds where the next one's search starts
+  // (the distances found do not depend on it).
+  std::vector<PostureClearance> out(waypoints.size());
+  const int64_t count = static_cast<int64_t>(waypoints.size());
+#pragma omp parallel
+  {
+    Impl::Previous previous;
+#pragma omp for schedule(static)
+  for (int64_t i = 0; i < count; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    PostureClearance& at = out[k];
+    at = w.Measure(waypoints[k], /*first_only=*/false, background.get(), &previous);
     at.collision_fraction = at.colliding ? 1.0 : 0.0;
     for (const auto& [t, q] : ways[k]) {
       const PostureClearance on_way = w.Measure(q, /*first_only=*/true, background.get());
@@ -340,7 +391,7 @@ std::vector<PostureClearance> ClearanceWorld::Check(const std::vector<std::vecto
       at.p_world_collision = on_way.p_world_collision;
       break;
     }
-    out.push_back(at);
+  }
   }
   return out;
 }

@@ -1,5 +1,7 @@
 #include "edgefit/world/collision_pairs.h"
 
+#include <tinyxml2.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -129,5 +131,30 @@ std::vector<LinkPair> DisabledCollisionPairs(const KinematicModel& model,
   }
   return pairs;
 }
+
+Status ReadDisabledCollisionPairs(const std::string& path, const KinematicModel& cell,
+                         std::set<std::pair<int, int>>* pairs) {
+  tinyxml2::XMLDocument doc;
+  if (doc.LoadFile(path.c_str()) != tinyxml2::XML_SUCCESS) {
+    return Status::Error(path + ": cannot read it as XML (" + std::string(doc.ErrorStr()) + ")");
+  }
+  const tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
+  if (robot == nullptr) return Status::Error(path + ": no <robot> element");
+  for (const tinyxml2::XMLElement* e = robot->FirstChildElement("disable_collisions"); e != nullptr;
+       e = e->NextSiblingElement("disable_collisions")) {
+    const char* a = e->Attribute("link1");
+    const char* b = e->Attribute("link2");
+    const int la = a == nullptr ? -1 : cell.LinkIndex(a);
+    const int lb = b == nullptr ? -1 : cell.LinkIndex(b);
+    if (la < 0 || lb < 0) {
+      return Status::Error(path + ": disable_collisions names a link that cell.urdf lacks ('" +
+                           std::string(a == nullptr ? "" : a) + "', '" +
+                           std::string(b == nullptr ? "" : b) + "')");
+    }
+    pairs->insert({std::min(la, lb), std::max(la, lb)});
+  }
+  return Status::Ok();
+}
+
 
 }  // namespace edgefit

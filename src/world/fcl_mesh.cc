@@ -8,6 +8,7 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace edgefit {
@@ -31,10 +32,13 @@ FclMesh::FclMesh(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
 
 FclMesh::~FclMesh() = default;
 
-double FclMesh::Distance(const Pose& T_world_this, const FclMesh& other,
-                         const Pose& T_world_other) const {
+double FclMesh::Distance(const Pose& T_world_this, const FclMesh& other, const Pose& T_world_other,
+                         double bound) const {
   fcl::DistanceRequestd request;
   fcl::DistanceResultd result;
+  // FCL's traversal starts from the result's distance and only updates it
+  // when nearer: beyond `bound` it prunes at once.
+  result.min_distance = std::min(bound, std::numeric_limits<double>::max());
   const double d = fcl::distance(&impl_->model, fcl::Transform3d(T_world_this.matrix()),
                                  &other.impl_->model, fcl::Transform3d(T_world_other.matrix()),
                                  request, result);

@@ -6,6 +6,7 @@
 #define EDGEFIT_WORLD_FCL_MESH_H_
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <memory>
 
 #include "edgefit/core/pose.h"
@@ -24,8 +25,11 @@ class FclMesh {
   // The least distance [m] between this mesh posed by T_world_this and
   // `other` posed by T_world_other: 0 when their surfaces touch or cross.
   // Surfaces only: a mesh wholly inside a closed other one is at the
-  // distance between the two surfaces.
-  double Distance(const Pose& T_world_this, const FclMesh& other, const Pose& T_world_other) const;
+  // distance between the two surfaces. Sought only below `bound` [m]: a
+  // distance beyond it is returned as `bound`, sooner (FCL's traversal
+  // drops what cannot come nearer).
+  double Distance(const Pose& T_world_this, const FclMesh& other, const Pose& T_world_other,
+                  double bound = std::numeric_limits<double>::infinity()) const;
 
   // Whether this posed surface touches or crosses the (solid) box.
   bool CollidesBox(const Pose& T_world_this, const Eigen::AlignedBox3d& box_world) const;

@@ -261,6 +261,48 @@ TEST(BackgroundVoxelsTest, OneVoxelTwoVoxelsAndAnOutwardSurface) {
   EXPECT_NEAR(volume, 2 * v * v * v, 1e-12);
 }
 
+// The merged rectangles are the same surface: the same area and enclosed
+// volume, every face centre of the closed surface on them, and a slab's
+// faces merged to its six sides.
+TEST(BackgroundVoxelsTest, RectanglesAreTheSameSurface) {
+  const double v = 0.02;
+  std::vector<Eigen::Vector3f> points;
+  for (int x = 0; x < 30; ++x) {
+    for (int y = 0; y < 20; ++y) points.emplace_back((x + 0.5f) * v, (y + 0.5f) * v, 0.5f * v);  // a slab
+  }
+  for (int z = 1; z < 6; ++z) points.emplace_back(0.5f * v, 0.5f * v, (z + 0.5f) * v);          // a post on it
+  points.emplace_back(10.5f * v, 5.5f * v, 3.5f * v);                                            // a voxel apart
+  const std::vector<std::array<int32_t, 3>> voxels = OccupiedVoxels(points, v);
+  const TriangleMesh closed = VoxelUnionSurface(voxels, v);
+  const TriangleMesh merged = VoxelUnionRectangles(voxels, v);
+  EXPECT_LT(merged.triangles.size() * 10, closed.triangles.size());
+  const auto volume = [](const TriangleMesh& m) {
+    double sum = 0.0;
+    for (const Eigen::Vector3i& t : m.triangles) {
+      sum += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]])) / 6.0;
+    }
+    return sum;
+  };
+  EXPECT_NEAR(merged.SurfaceArea(), closed.SurfaceArea(), 1e-9);
+  EXPECT_NEAR(volume(merged), volume(closed), 1e-12);
+  EXPECT_NEAR(volume(merged), static_cast<double>(voxels.size()) * v * v * v, 1e-12);
+  // Each closed face's centre lies in a rectangle of the same plane.
+  for (size_t f = 0; f < closed.triangles.size(); f += 2) {
+    const Eigen::Vector3i& t = closed.triangles[f];
+    const Eigen::Vector3d centre = 0.5 * (closed.vertices[t[1]] + closed.vertices[t[2]]);
+    bool on = false;
+    for (const Eigen::Vector3i& r : merged.triangles) {
+      const Eigen::Vector3d &a = merged.vertices[r[0]], &b = merged.vertices[r[1]], &c = merged.vertices[r[2]];
+      const Eigen::Vector3d n = (b - a).cross(c - a);
+      if (std::abs(n.normalized().dot(centre - a)) > 1e-12) continue;
+      const double s1 = n.dot((b - a).cross(centre - a)), s2 = n.dot((c - b).cross(centre - b)),
+                   s3 = n.dot((a - c).cross(centre - c));
+      if (s1 >= -1e-15 && s2 >= -1e-15 && s3 >= -1e-15) on = true;
+    }
+    EXPECT_TRUE(on) << centre.transpose();
+  }
+}
+
 TEST(BackgroundVoxelsTest, SurfaceAndOctreeHoldEveryPoint) {
   // A wall and a box's faces, scanned every 7 mm, and a point far off.
   std::vector<Eigen::Vector3f> points;

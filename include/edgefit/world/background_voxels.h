@@ -54,6 +54,13 @@ std::vector<std::array<int32_t, 3>> OccupiedVoxels(const std::vector<Eigen::Vect
 // normals outward.
 TriangleMesh VoxelUnionSurface(const std::vector<std::array<int32_t, 3>>& voxels, double voxel);
 
+// The same surface with each plane's neighbouring faces merged into
+// rectangles (rows, then rows of equal extent): far fewer triangles (a
+// floor's thousands of faces become a few), for collision and distance
+// queries; not a closed mesh (a rectangle's corner may lie on another's
+// edge), so not for files that promise one.
+TriangleMesh VoxelUnionRectangles(const std::vector<std::array<int32_t, 3>>& voxels, double voxel);
+
 // Removes from *voxels (sorted) the cells whose cube, grown by `margin`
 // [m] on every side, touches the surface of `mesh_world` (world frame):
 // space a machine filled when it was scanned, and its rim, where what is

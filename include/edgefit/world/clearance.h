@@ -2,9 +2,10 @@
 // everything else, posture by posture along a trajectory (`edgefit
 // clearance`). The world is read back from its folder as a planner loads it:
 // cell.urdf at joint_states.yaml's values, cell.srdf's disabled pairs and
-// background.ply. Link meshes and the background's voxel surface are FCL
-// hierarchies (fcl_mesh.h); distances are between surfaces, in metres, and
-// 0 when two surfaces touch or cross.
+// background.ply. Link meshes and the background's voxel surface (its faces
+// merged into rectangles) are FCL hierarchies (fcl_mesh.h); distances are
+// between surfaces, exact, in metres, and 0 when two surfaces touch or
+// cross. The waypoints are measured on every thread, each a run of them.
 //
 // For each posture:
 //   distance_to_background  the machine's links that move relative to its

@@ -15,10 +15,12 @@
 #define EDGEFIT_WORLD_COLLISION_PAIRS_H_
 
 #include <cstdint>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
 
 namespace edgefit {
@@ -52,6 +54,12 @@ std::vector<std::pair<int, int>> TouchingLinks(const KinematicModel& a, const st
 
 // Whether a moving joint lies on the tree path between the two links.
 bool MoveRelative(const KinematicModel& model, int link_a, int link_b);
+
+// An SRDF's <disable_collisions> pairs (cell.srdf) as `model`'s link
+// indices, lower first; one line naming the file on unreadable XML or an
+// unknown link.
+Status ReadDisabledCollisionPairs(const std::string& path, const KinematicModel& model,
+                                  std::set<std::pair<int, int>>* pairs);
 
 }  // namespace edgefit
 
