@@ -13,6 +13,7 @@
 #include "edgefit/world/background_voxels.h"
 #include "edgefit/world/collision_pairs.h"
 #include "fcl_mesh.h"
+#include "least_distance.h"
 
 namespace edgefit {
 
@@ -57,6 +58,7 @@ struct ClearanceWorld::Impl {
   struct Previous {
     std::vector<Pose> T;
     PostureClearance clearance;
+    PairCache self;  // a slot per self pair
   };
   // Distances at one posture; with `first_only`, stops at the first contact.
   // `previous` (may be null; not with first_only): read, then set to this
@@ -227,9 +229,11 @@ PostureClearance ClearanceWorld::Impl::Measure(const std::vector<double>& q, boo
                                                const FclMesh* background, Previous* previous) const {
   PostureClearance c;
   const std::vector<Pose> T = cell.ForwardKinematics(q);
+  const auto pose = [&](int l) -> const Pose& { return T[static_cast<size_t>(l)]; };
+  const auto mesh = [&](int l) -> const FclMesh* { return meshes[static_cast<size_t>(l)].get(); };
   // How far any point of the machine's links moved since the previous
   // posture: each least distance is at most the previous one plus this
-  // (twice, between two of its links), where the search starts.
+  // (twice between two of its links), where its search starts.
   double moved = PostureClearance::kNone;
   if (previous != nullptr && !previous->T.empty()) {
     moved = 0.0;
@@ -241,85 +245,57 @@ PostureClearance ClearanceWorld::Impl::Measure(const std::vector<double>& q, boo
       moved = std::max(moved, (a * s.centre - b * s.centre).norm() + turn * s.radius);
     }
   }
-  const auto start = [&](double last, double factor) {
-    return std::isfinite(moved) && std::isfinite(last) ? last + factor * moved : PostureClearance::kNone;
+  const auto first_cap = [&](double PostureClearance::*distance, double factor) {
+    const double last = std::isfinite(moved) ? previous->clearance.*distance : PostureClearance::kNone;
+    return std::isfinite(last) ? last + factor * moved : PostureClearance::kNone;
   };
-  const auto pose = [&](int l) -> const Pose& { return T[static_cast<size_t>(l)]; };
-  const auto mesh = [&](int l) -> const FclMesh& { return *meshes[static_cast<size_t>(l)]; };
-  // A pair: link a as posed, and b (a link, or the background: -1) with its
-  // mesh and pose; `bound`: the least distance their spheres allow.
-  struct Pair {
-    double bound;
-    int a, b;
-    const FclMesh* mb;
-    const Pose* Tb;
-  };
-  const auto sphere_bound = [&](int a, int b, const Pose& Tb) {
-    const Sphere& sa = spheres[static_cast<size_t>(a)];
-    const Sphere& sb = spheres[static_cast<size_t>(b)];
-    return std::max(0.0, (pose(a) * sa.centre - Tb * sb.centre).norm() - sa.radius - sb.radius);
-  };
-  // Takes the pair's distance (sought below `limit`) for *slot; the first
-  // contact names the pair.
-  const auto take = [&](double* slot, const Pair& p, double limit) {
-    const double d = first_only ? (mesh(p.a).Collides(pose(p.a), *p.mb, *p.Tb) ? 0.0 : PostureClearance::kNone)
-                                : mesh(p.a).Distance(pose(p.a), *p.mb, *p.Tb, limit);
-    if (d < limit) *slot = d;
-    if (d > 0.0 || c.colliding) return;
-    c.colliding = true;
-    mesh(p.a).Collides(pose(p.a), *p.mb, *p.Tb, &c.p_world_collision);
-    c.collision_a = LinkName(p.a);
-    c.collision_b = p.b < 0 ? "background" : LinkName(p.b);
-  };
-  // The least distance over `pairs` for *slot, nearest spheres first, in
-  // passes whose cap grows 4-fold from 1 cm (or the hint: a bound on the
-  // least distance): a pass seeks each pair's
-  // distance only below the cap (or the least found), which FCL prunes at
-  // once where the pair is farther, and the search ends with a pass that
-  // finds one below its cap, or the pass without a cap. With first_only:
-  // the first contact, and true when there is one.
-  const auto least = [&](double* slot, std::vector<Pair>* pairs, double hint) {
-    std::sort(pairs->begin(), pairs->end(),
-              [](const Pair& x, const Pair& y) { return std::tie(x.bound, x.a, x.b) < std::tie(y.bound, y.a, y.b); });
-    if (first_only) {
-      for (const Pair& p : *pairs) {
-        if (p.bound > 0.0) break;
-        take(slot, p, std::numeric_limits<double>::min());
-        if (c.colliding) return true;
-      }
-      return false;
+  const auto pair = [&](int a, int b, const FclMesh* mb, const Pose* Tb, int cache) {
+    MeshPair p{0.0, a, b, mesh(a), &pose(a), mb, Tb, cache};
+    if (b >= 0) {
+      const Sphere& sa = spheres[static_cast<size_t>(a)];
+      const Sphere& sb = spheres[static_cast<size_t>(b)];
+      p.bound = std::max(0.0, (pose(a) * sa.centre - *Tb * sb.centre).norm() - sa.radius - sb.radius);
     }
-    constexpr double kFirstCap = 0.01, kLastCap = 1e3;  // [m]
-    for (double cap = std::isfinite(hint) ? std::max(hint, 1e-9) : kFirstCap;; cap *= 4.0) {
-      const bool last = cap >= *slot || cap > kLastCap;  // seeking below the least found
-      for (const Pair& p : *pairs) {
-        const double limit = last ? *slot : std::min(*slot, cap);
-        if (p.bound >= limit) break;
-        take(slot, p, limit);
-      }
-      if (last || *slot < cap) return false;
+    return p;
+  };
+  // Each distance for *slot; the first contact names the pair. True to stop
+  // (first_only and a contact).
+  const auto take = [&](double* slot, const std::vector<MeshPair>& pairs, double cap, PairCache* cache) {
+    const LeastDistance least = first_only ? FindContact(pairs) : FindLeastDistance(pairs, *slot, cap, cache);
+    *slot = std::min(*slot, least.distance);
+    if (least.contact && !c.colliding) {
+      c.colliding = true;
+      c.collision_a = LinkName(least.contact_a);
+      c.collision_b = least.contact_b < 0 ? "background" : LinkName(least.contact_b);
+      c.p_world_collision = least.p_world;
     }
+    return first_only && c.colliding;
   };
   const Pose identity = Pose::Identity();
-  std::vector<Pair> pairs;
+  std::vector<MeshPair> pairs;
   if (!background_path.empty()) c.distance_to_background = max_distance;
   if (background != nullptr) {
-    for (const int l : moving) pairs.push_back({0.0, l, -1, background, &identity});
-    if (least(&c.distance_to_background, &pairs,
-              previous ? start(previous->clearance.distance_to_background, 1.0) : PostureClearance::kNone)) {
+    for (const int l : moving) pairs.push_back(pair(l, -1, background, &identity, -1));
+    if (take(&c.distance_to_background, pairs, first_cap(&PostureClearance::distance_to_background, 1.0), nullptr)) {
       return c;
     }
   }
   pairs.clear();
-  for (const auto& [l, o, To] : others) pairs.push_back({sphere_bound(l, o, To), l, o, &mesh(o), &To});
-  if (least(&c.distance_to_machines, &pairs,
-            previous ? start(previous->clearance.distance_to_machines, 1.0) : PostureClearance::kNone)) {
+  for (const auto& [l, o, To] : others) pairs.push_back(pair(l, o, mesh(o), &To, -1));
+  if (take(&c.distance_to_machines, pairs, first_cap(&PostureClearance::distance_to_machines, 1.0), nullptr)) {
     return c;
   }
   pairs.clear();
-  for (const auto& [a, b] : self_pairs) pairs.push_back({sphere_bound(a, b, pose(b)), a, b, &mesh(b), &pose(b)});
-  least(&c.self_distance, &pairs, previous ? start(previous->clearance.self_distance, 2.0) : PostureClearance::kNone);
-  if (previous != nullptr) *previous = {T, c};
+  for (size_t i = 0; i < self_pairs.size(); ++i) {
+    const auto& [a, b] = self_pairs[i];
+    pairs.push_back(pair(a, b, mesh(b), &pose(b), static_cast<int>(i)));
+  }
+  take(&c.self_distance, pairs, first_cap(&PostureClearance::self_distance, 2.0),
+       previous != nullptr ? &previous->self : nullptr);
+  if (previous != nullptr) {
+    previous->T = T;
+    previous->clearance = c;
+  }
   return c;
 }
 
@@ -367,17 +343,21 @@ std::vector<PostureClearance> ClearanceWorld::Check(const std::vector<std::vecto
       if (!voxels.empty()) background = std::make_unique<FclMesh>(VoxelUnionRectangles(voxels, voxel));
     }
   }
-  // The waypoints in runs, one per thread (FCL's queries only read); each
-  // thread's previous waypoint bounds where the next one's search starts
-  // (the distances found do not depend on it).
+  // The waypoints in runs of kRun, shared among the threads (FCL's queries
+  // only read). In a run, the previous waypoint bounds where the next one's
+  // searches start, and a pair of links that kept its relative pose keeps
+  // its distance: what a waypoint gets depends on its run only, not on the
+  // threads.
+  constexpr int64_t kRun = 64;
   std::vector<PostureClearance> out(waypoints.size());
   const int64_t count = static_cast<int64_t>(waypoints.size());
 #pragma omp parallel
   {
     Impl::Previous previous;
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, kRun)
   for (int64_t i = 0; i < count; ++i) {
     const size_t k = static_cast<size_t>(i);
+    if (i % kRun == 0) previous = {{}, {}, PairCache(w.self_pairs.size())};
     PostureClearance& at = out[k];
     at = w.Measure(waypoints[k], /*first_only=*/false, background.get(), &previous);
     at.collision_fraction = at.colliding ? 1.0 : 0.0;

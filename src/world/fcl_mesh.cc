@@ -8,10 +8,15 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <vector>
 
+#include "edgefit/model/point_triangle_distance.h"
+
 namespace edgefit {
+
+constexpr size_t kContacts = 16;  // FCL's contacts weighed for a collision's point
 
 struct FclMesh::Impl {
   fcl::BVHModel<fcl::OBBRSSd> model;
@@ -60,11 +65,37 @@ bool FclMesh::Collides(const Pose& T_world_this, const FclMesh& other, const Pos
                        Eigen::Vector3d* p_world) const {
   fcl::CollisionRequestd request;
   request.enable_contact = p_world != nullptr;
+  request.num_max_contacts = p_world != nullptr ? kContacts : 1;
   fcl::CollisionResultd result;
   fcl::collide(&impl_->model, fcl::Transform3d(T_world_this.matrix()), &other.impl_->model,
                fcl::Transform3d(T_world_other.matrix()), request, result);
-  if (p_world != nullptr && result.numContacts() > 0) *p_world = result.getContact(0).pos;
-  return result.isCollision();
+  if (p_world == nullptr || result.numContacts() == 0) return result.isCollision();
+  // FCL's point for triangles that cross is on both; for coplanar ones that
+  // overlap it may be on neither. The point of the contacts' triangles
+  // nearest both is taken: FCL's, or a corner's nearest point on the other.
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < result.numContacts(); ++i) {
+    const fcl::Contactd& contact = result.getContact(i);
+    std::array<Eigen::Vector3d, 3> t, o;
+    for (size_t k = 0; k < 3; ++k) {
+      t[k] = T_world_this * impl_->model.vertices[impl_->model.tri_indices[contact.b1][k]];
+      o[k] = T_world_other * other.impl_->model.vertices[other.impl_->model.tri_indices[contact.b2][k]];
+    }
+    std::vector<Eigen::Vector3d> candidates = {contact.pos};
+    for (size_t k = 0; k < 3; ++k) {
+      candidates.push_back(ClosestPointOnTriangle(t[k], o[0], o[1], o[2]));
+      candidates.push_back(ClosestPointOnTriangle(o[k], t[0], t[1], t[2]));
+    }
+    for (const Eigen::Vector3d& p : candidates) {
+      const double off = std::max(SquaredDistanceToTriangle(p, t[0], t[1], t[2]),
+                                  SquaredDistanceToTriangle(p, o[0], o[1], o[2]));
+      if (off < best) {
+        best = off;
+        *p_world = p;
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace edgefit

@@ -1,5 +1,5 @@
-// The squared distance from a point to a triangle (Ericson, Real-Time
-// Collision Detection, 5.1.5: the closest point by the Voronoi region of
+// The point of a triangle nearest a given point, and their squared distance
+// (Ericson, Real-Time Collision Detection, 5.1.5: by the Voronoi region of
 // the triangle the point lies in).
 #ifndef EDGEFIT_MODEL_POINT_TRIANGLE_DISTANCE_H_
 #define EDGEFIT_MODEL_POINT_TRIANGLE_DISTANCE_H_
@@ -8,27 +8,30 @@
 
 namespace edgefit {
 
-inline double SquaredDistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                        const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+inline Eigen::Vector3d ClosestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                              const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return ap.squaredNorm();
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
   const Eigen::Vector3d bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return bp.squaredNorm();
+  if (d3 >= 0.0 && d4 <= d3) return b;
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return (p - (a + d1 / (d1 - d3) * ab)).squaredNorm();
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + d1 / (d1 - d3) * ab;
   const Eigen::Vector3d cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return cp.squaredNorm();
+  if (d6 >= 0.0 && d5 <= d6) return c;
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return (p - (a + d2 / (d2 - d6) * ac)).squaredNorm();
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + d2 / (d2 - d6) * ac;
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
-    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).squaredNorm();
-  }
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
   const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).squaredNorm();
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+inline double SquaredDistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                        const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return (p - ClosestPointOnTriangle(p, a, b, c)).squaredNorm();
 }
 
 }  // namespace edgefit
