@@ -53,8 +53,9 @@ struct ClearanceWorld::Impl {
   std::vector<std::string> joint_names;
 
   const std::string& LinkName(int l) const { return cell.links()[static_cast<size_t>(l)].name; }
-  // The last posture measured on a thread: its links' poses and distances,
-  // which bound the next posture's (how far its links moved added).
+  // The last posture measured in a run of waypoints (Check): its links'
+  // poses and distances, which bound where the next posture's searches
+  // start, and its self pairs' distances, kept while a pair's pose is.
   struct Previous {
     std::vector<Pose> T;
     PostureClearance clearance;
@@ -76,11 +77,13 @@ const std::vector<std::string>& ClearanceWorld::machines() const { return impl_-
 const std::string& ClearanceWorld::machine() const { return impl_->machine; }
 
 namespace {
+
 std::string Join(const std::vector<std::string>& names) {
   std::string list;
   for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
   return list;
 }
+
 }  // namespace
 
 Status ClearanceWorld::Load(const std::string& folder, const std::string& machine,

@@ -35,7 +35,10 @@ class FclMesh {
   bool CollidesBox(const Pose& T_world_this, const Eigen::AlignedBox3d& box_world) const;
 
   // Whether the two posed surfaces touch or cross (cheaper than Distance);
-  // *p_world (may be null): a point where they do.
+  // *p_world (may be null): a point where they do, the one nearest both
+  // surfaces among FCL's contact points and the nearest points of their
+  // triangles' corners (FCL's own lies off both where coplanar triangles
+  // overlap, as voxel faces do).
   bool Collides(const Pose& T_world_this, const FclMesh& other, const Pose& T_world_other,
                 Eigen::Vector3d* p_world = nullptr) const;
 
