@@ -67,6 +67,21 @@ void AddFace(int a, int b, int d, int e, int side, TriangleMesh* mesh) {
     mesh->triangles.emplace_back(a, e, d);
   }
 }
+
+// Calls face(v, axis, side) for each outer face of the union: the side of
+// voxel v facing `side` along `axis`, where no voxel is.
+template <typename Face>
+void ForEachOuterFace(const std::vector<Voxel>& voxels, const Face& face) {
+  for (const Voxel& v : voxels) {
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const int side : {-1, 1}) {
+        Voxel neighbour = v;
+        neighbour[static_cast<size_t>(axis)] += side;
+        if (!Contains(voxels, neighbour)) face(v, axis, side);
+      }
+    }
+  }
+}
 }  // namespace
 
 TriangleMesh VoxelUnionSurface(const std::vector<Voxel>& voxels, double voxel) {
@@ -85,26 +100,19 @@ TriangleMesh VoxelUnionSurface(const std::vector<Voxel>& voxels, double voxel) {
     if (added) mesh.vertices.emplace_back(c[0] * voxel, c[1] * voxel, c[2] * voxel);
     return it->second;
   };
-  for (const Voxel& v : voxels) {
-    for (int axis = 0; axis < 3; ++axis) {
-      for (const int side : {-1, 1}) {
-        Voxel neighbour = v;
-        neighbour[static_cast<size_t>(axis)] += side;
-        if (Contains(voxels, neighbour)) continue;  // an inner face
-        // The face's corners: on the plane `axis` = v + (side > 0), the two
-        // other axes u, w spanning it; counter-clockwise seen from outside.
-        const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-        Voxel c = v;
-        c[static_cast<size_t>(axis)] += side > 0 ? 1 : 0;
-        Voxel c00 = c, c10 = c, c11 = c, c01 = c;
-        c10[static_cast<size_t>(u)] += 1;
-        c11[static_cast<size_t>(u)] += 1;
-        c11[static_cast<size_t>(w)] += 1;
-        c01[static_cast<size_t>(w)] += 1;
-        AddFace(corner(c00), corner(c10), corner(c11), corner(c01), side, &mesh);
-      }
-    }
-  }
+  ForEachOuterFace(voxels, [&](const Voxel& v, int axis, int side) {
+    // The face's corners: on the plane `axis` = v + (side > 0), the two
+    // other axes u, w spanning it.
+    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+    Voxel c = v;
+    c[static_cast<size_t>(axis)] += side > 0 ? 1 : 0;
+    Voxel c00 = c, c10 = c, c11 = c, c01 = c;
+    c10[static_cast<size_t>(u)] += 1;
+    c11[static_cast<size_t>(u)] += 1;
+    c11[static_cast<size_t>(w)] += 1;
+    c01[static_cast<size_t>(w)] += 1;
+    AddFace(corner(c00), corner(c10), corner(c11), corner(c01), side, &mesh);
+  });
   return mesh;
 }
 
@@ -113,17 +121,10 @@ TriangleMesh VoxelUnionRectangles(const std::vector<Voxel>& voxels, double voxel
   // plane, facing `side`, covering cell (u, w) of the two other axes.
   using Face = std::array<int32_t, 5>;
   std::vector<Face> faces;
-  for (const Voxel& v : voxels) {
-    for (int axis = 0; axis < 3; ++axis) {
-      for (const int side : {-1, 1}) {
-        Voxel neighbour = v;
-        neighbour[static_cast<size_t>(axis)] += side;
-        if (Contains(voxels, neighbour)) continue;
-        const size_t u = static_cast<size_t>((axis + 1) % 3), w = static_cast<size_t>((axis + 2) % 3);
-        faces.push_back({axis, side, v[static_cast<size_t>(axis)] + (side > 0 ? 1 : 0), v[w], v[u]});
-      }
-    }
-  }
+  ForEachOuterFace(voxels, [&](const Voxel& v, int axis, int side) {
+    const size_t u = static_cast<size_t>((axis + 1) % 3), w = static_cast<size_t>((axis + 2) % 3);
+    faces.push_back({axis, side, v[static_cast<size_t>(axis)] + (side > 0 ? 1 : 0), v[w], v[u]});
+  });
   std::sort(faces.begin(), faces.end());
   // Rows: runs of consecutive u, as (axis, side, plane, u0, u1, w).
   using Row = std::array<int32_t, 6>;

@@ -41,14 +41,13 @@ LeastDistance FindLeastDistance(std::vector<MeshPair> pairs, double start, doubl
   SortBySphere(&pairs);
   LeastDistance least;
   least.distance = start;
-  PairCache none;
   constexpr double kFirstCap = 0.01, kLastCap = 1e3;  // [m]
   for (double cap = std::isfinite(first_cap) ? std::max(first_cap, 1e-9) : kFirstCap;; cap *= 4.0) {
     const bool last = cap >= least.distance || cap > kLastCap;  // seeking below the least found
     for (const MeshPair& p : pairs) {
       const double limit = last ? least.distance : std::min(least.distance, cap);
       if (p.bound >= limit) break;
-      const double d = (cache != nullptr ? cache : &none)->Distance(p, limit);
+      const double d = cache != nullptr ? cache->Distance(p, limit) : p.mesh_a->Distance(*p.T_a, *p.mesh_b, *p.T_b, limit);
       if (d < limit) least.distance = d;
       if (d == 0.0 && !least.contact) TakeContact(p, &least);
     }

@@ -4,12 +4,11 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "edgefit/core/point_kdtree.h"
 #include "edgefit/model/mesh_loader.h"
-#include "edgefit/model/point_triangle_distance.h"
+#include "edgefit/model/mesh_proximity.h"
 #include "edgefit/world/background_voxels.h"
 
 namespace edgefit {
@@ -44,46 +43,6 @@ bool NearCubes(const std::unordered_set<uint64_t>& cells, double size, const Eig
   return false;
 }
 
-// A mesh's triangles in a uniform grid: each triangle listed in every cell
-// its box, grown by `max_reach`, overlaps, so that one cell holds every
-// triangle within max_reach of a point in it.
-class TriangleGrid {
- public:
-  TriangleGrid(const TriangleMesh& mesh, double max_reach) : mesh_(mesh) {
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-      Eigen::AlignedBox3d box;
-      for (int k = 0; k < 3; ++k) box.extend(mesh.vertices[static_cast<size_t>(mesh.triangles[t][k])]);
-      const Cell lo = VoxelOf(Eigen::Vector3d(box.min().array() - max_reach), kCell);
-      const Cell hi = VoxelOf(Eigen::Vector3d(box.max().array() + max_reach), kCell);
-      for (int32_t x = lo[0]; x <= hi[0]; ++x) {
-        for (int32_t y = lo[1]; y <= hi[1]; ++y) {
-          for (int32_t z = lo[2]; z <= hi[2]; ++z) cells_[Key({x, y, z})].push_back(static_cast<uint32_t>(t));
-        }
-      }
-    }
-  }
-
-  // Whether p lies within `reach` (at most max_reach) of a triangle.
-  bool Near(const Eigen::Vector3d& p, double reach) const {
-    const auto it = cells_.find(Key(VoxelOf(p, kCell)));
-    if (it == cells_.end()) return false;
-    for (const uint32_t t : it->second) {
-      const Eigen::Vector3i& f = mesh_.triangles[t];
-      if (SquaredDistanceToTriangle(p, mesh_.vertices[static_cast<size_t>(f[0])],
-                                    mesh_.vertices[static_cast<size_t>(f[1])],
-                                    mesh_.vertices[static_cast<size_t>(f[2])]) <= reach * reach) {
-        return true;
-      }
-    }
-    return false;
-  }
-
- private:
-  static constexpr double kCell = 0.05;  // [m]
-  const TriangleMesh& mesh_;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
-};
-
 double Share(size_t part, size_t whole) {
   return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
@@ -106,8 +65,8 @@ Status ScoreWorldTruth(const TruthPoints& truth, const std::string& world_dir, c
   // The machines as scanned.
   TriangleMesh machines;
   EDGEFIT_RETURN_IF_ERROR(LoadMesh(world_dir + "/machines_as_scanned.ply", Eigen::Vector3d::Ones(), &machines));
-  const TriangleGrid machine_grid(
-      machines, std::max({options.machine_reach, options.accessory_reach, options.far_reach}));
+  const MeshProximity machine_grid(
+      machines, std::max({options.machine_reach, options.accessory_reach, options.far_reach}), 0.05);
   // The machines' and accessories' points, and the cells of `far` within
   // which lies every point nearer than `far` to one of them.
   std::vector<Eigen::Vector3f> machine_points;
@@ -150,18 +109,18 @@ Status ScoreWorldTruth(const TruthPoints& truth, const std::string& world_dir, c
         if (NearCubes(background, voxel, p, options.background_reach)) ++covered;
         if (far_from_machines(q)) {
           ++n_far;
-          if (machine_grid.Near(p, options.far_reach)) ++far_taken;
+          if (machine_grid.Within(p, options.far_reach)) ++far_taken;
         }
         break;
       case TruthKind::kMachine:
         ++n_machine;
         if (NearCubes(background, voxel, p, options.ghost_reach)) ++ghosts;
-        if (machine_grid.Near(p, options.machine_reach)) ++machine_covered;
+        if (machine_grid.Within(p, options.machine_reach)) ++machine_covered;
         break;
       case TruthKind::kAccessory:
         ++n_accessory;
         if (NearCubes(background, voxel, p, options.ghost_reach)) ++ghosts;
-        if (machine_grid.Near(p, options.accessory_reach)) ++accessory_covered;
+        if (machine_grid.Within(p, options.accessory_reach)) ++accessory_covered;
         break;
     }
   }
