@@ -2,7 +2,7 @@
 // the background, the other machines and itself, posture by posture
 // (include/edgefit/world/clearance.h says what is measured).
 //   edgefit clearance --world=DIR [--machine=NAME] [--trajectory=traj.csv | --joints=...]
-//                     [--step_deg=0.5] [--step_mm=5] [--json]
+//                     [--step_deg=0.5] [--step_mm=5] [--json] [--out_report=R.html]
 #include <gflags/gflags.h>
 
 #include <cmath>
@@ -16,6 +16,8 @@
 #include "edgefit/core/format.h"
 #include "edgefit/io/trajectory_csv.h"
 #include "edgefit/model/joint_values.h"
+#include "edgefit/report/three_js.h"
+#include "edgefit/report/world_report.h"
 #include "edgefit/world/clearance.h"
 
 DEFINE_string(world, "", "clearance: the folder edgefit world wrote.");
@@ -52,6 +54,10 @@ int RunClearance(const Command& command) {
   options.step_m = FLAGS_step_mm * 1e-3;
   if (std::string error; !options.IsValid(&error)) {
     return BadInput(command, "--step_deg and --step_mm must be > 0");
+  }
+  if (!FLAGS_out_report.empty()) {
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out_report}));
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckThreeJs(kDebianThreeJsDir));
   }
   Progress("clearance: loading " + FLAGS_world);
   ClearanceWorld world;
@@ -91,6 +97,21 @@ int RunClearance(const Command& command) {
   for (size_t k = 0; k < results.size() && first < 0; ++k) {
     if (results[k].colliding) first = static_cast<int>(k);
   }
+  if (!FLAGS_out_report.empty()) {
+    Progress("clearance: the report");
+    WorldReport report;
+    report.title = "edgefit clearance: " + machine + " in " + FLAGS_world;
+    report.lines = {
+        (FLAGS_trajectory.empty() ? std::string("--joints=") + FLAGS_joints : "--trajectory=" + FLAGS_trajectory) +
+            ": " + std::to_string(results.size()) + " waypoint(s), the way between checked every " +
+            FormatNumber("%.2f deg / ", FLAGS_step_deg) + FormatNumber("%.1f mm", FLAGS_step_mm),
+        first < 0 ? std::string("no collision")
+                  : "first collision: waypoint " + std::to_string(first + 1) + ", " +
+                        DescribeCollision(results[static_cast<size_t>(first)])};
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command,
+                                 world.Picture(waypoints, results, ClearancePictureOptions(), &report));
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, WriteWorldReport(report, FLAGS_out_report));
+  }
   if (FLAGS_json) {
     json out = {{"world", FLAGS_world},
                 {"machine", machine},
@@ -110,6 +131,7 @@ int RunClearance(const Command& command) {
       }
       out["waypoints"].push_back(w);
     }
+    if (!FLAGS_out_report.empty()) out["report"] = FLAGS_out_report;
     std::printf("%s\n", out.dump(2).c_str());
     return 0;
   }
@@ -119,17 +141,7 @@ int RunClearance(const Command& command) {
               "self[mm]", "collision");
   for (size_t k = 0; k < results.size(); ++k) {
     const PostureClearance& c = results[k];
-    std::string collision = "-";
-    if (c.colliding) {
-      collision = c.collision_a + " with " + c.collision_b +
-                  FormatNumber(" at (%.3f", c.p_world_collision.x()) +
-                  FormatNumber(", %.3f", c.p_world_collision.y()) +
-                  FormatNumber(", %.3f) m", c.p_world_collision.z());
-      if (c.collision_fraction < 1.0) {
-        collision += FormatNumber(" (%.0f %% of the way from the previous waypoint)",
-                                  100.0 * c.collision_fraction);
-      }
-    }
+    const std::string collision = c.colliding ? DescribeCollision(c) : "-";
     std::printf("%8zu  %14s  %14s  %10s  %s\n", k + 1, Millimetres(c.distance_to_background).c_str(),
                 Millimetres(c.distance_to_machines).c_str(), Millimetres(c.self_distance).c_str(),
                 collision.c_str());
@@ -139,6 +151,7 @@ int RunClearance(const Command& command) {
   } else {
     std::printf("first collision: waypoint %d\n", first + 1);
   }
+  if (!FLAGS_out_report.empty()) std::printf("report: %s\n", FLAGS_out_report.c_str());
   return 0;
 }
 
@@ -151,13 +164,16 @@ Command ClearanceCommand() {
           "own links, and the first collision (FCL)",
           "Usage:\n"
           "  edgefit clearance --world=DIR [--machine=NAME] [--trajectory=traj.csv | --joints=a1=0.3,...]\n"
-          "                    [--step_deg=0.5] [--step_mm=5] [--json]\n"
+          "                    [--step_deg=0.5] [--step_mm=5] [--json] [--out_report=R.html]\n"
           "Example:\n"
           "  edgefit world --result=result.json --name=robot --out_dir=world\n"
           "  edgefit clearance --world=world --joints=joint_2=-30deg\n"
           "Waypoints are numbered from 1 in the text (rows after the header) and from 0 in\n"
-          "--json; a collision on the way from waypoint k-1 to k is reported on k.",
-          {"world", "machine", "trajectory", "joints", "step_deg", "step_mm", "json"},
+          "--json; a collision on the way from waypoint k-1 to k is reported on k.\n"
+          "--out_report: an HTML page of the world (the background near the way, every machine\n"
+          "with its attachments), the machine at each waypoint on a slider, where it collides,\n"
+          "and the clearance along the trajectory as a plot.",
+          {"world", "machine", "trajectory", "joints", "step_deg", "step_mm", "json", "out_report"},
           RunClearance};
 }
 

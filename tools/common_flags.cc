@@ -56,7 +56,8 @@ DEFINE_string(out_json, "",
 DEFINE_string(out_report, "",
               "Optional output: a self-contained HTML report (.html). fit: the scan against the "
               "fitted model in 3D, coloured by distance, every joint's value and verdict; bench: "
-              "Tables 1-2 and the ablation plots.");
+              "Tables 1-2 and the ablation plots; clearance: the world and the machine's way "
+              "through it in 3D, with the clearance plotted.");
 DEFINE_int32(scanners, 3,
              "Number of scanners placed around the asset (2.5-5 m away, 1.2-1.8 m high).");
 DEFINE_double(spacing_mm, 1.7,

@@ -119,6 +119,7 @@ std::string SvgChart(const Chart& chart, int width, int height) {
 
   std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"chart\" width=\"" +
                     std::to_string(width) + "\" height=\"" + std::to_string(height) +
+                    "\" viewBox=\"0 0 " + std::to_string(width) + " " + std::to_string(height) +
                     "\" font-family=\"sans-serif\" font-size=\"11\">\n";
   svg += "<text x=\"" + FormatNumber("%.0f", left) + "\" y=\"16\" font-size=\"13\">" +
          EscapeHtml(chart.title) + "</text>\n";
@@ -167,28 +168,40 @@ std::string SvgChart(const Chart& chart, int width, int height) {
          "</text>\n";
   svg += "<text transform=\"translate(14," + FormatNumber("%.1f", 0.5 * (top + axis_y)) +
          ") rotate(-90)\" text-anchor=\"middle\">" + EscapeHtml(chart.y_label) + "</text>\n";
-  // Series: a polyline through the finite points, a marker on each.
+  // Series: polylines through the finite points (broken where one is not),
+  // a marker on each.
   for (size_t s = 0; s < chart.series.size(); ++s) {
     const ChartSeries& series = chart.series[s];
     const std::string colour = kColours[s % (sizeof(kColours) / sizeof(kColours[0]))];
+    const std::string stroke = "\" stroke=\"" + colour + "\" stroke-width=\"1.5\"" +
+                               (series.dashed ? " stroke-dasharray=\"5,3\"" : "");
     std::string points;
+    const auto end_line = [&] {
+      if (series.line && !points.empty()) svg += "<polyline fill=\"none" + stroke + " points=\"" + points + "\"/>\n";
+      points.clear();
+    };
     std::string markers;
     for (size_t k = 0; k < series.x.size() && k < series.y.size(); ++k) {
-      if (!std::isfinite(series.y[k]) || !std::isfinite(series.x[k])) continue;
+      if (!std::isfinite(series.y[k]) || !std::isfinite(series.x[k])) {
+        end_line();
+        continue;
+      }
       const double px = x_axis.Pixel(series.x[k]), py = y_axis.Pixel(series.y[k]);
       points += FormatNumber("%.1f", px) + "," + FormatNumber("%.1f", py) + " ";
+      if (!series.markers) continue;
       markers += "<circle cx=\"" + FormatNumber("%.1f", px) + "\" cy=\"" + FormatNumber("%.1f", py) +
                  "\" r=\"3\" fill=\"" + colour + "\"><title>" + EscapeHtml(series.name) + ": " +
                  FormatNumber("%g", series.y[k]) + "</title></circle>\n";
     }
-    svg += "<polyline fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"1.5\"" +
-           (series.dashed ? " stroke-dasharray=\"5,3\"" : "") + " points=\"" + points + "\"/>\n" +
-           markers;
+    end_line();
+    svg += markers;
     const double ly = height - legend_height + 16.0 * s + 4;
     svg += "<line x1=\"" + FormatNumber("%.1f", left) + "\" x2=\"" + FormatNumber("%.1f", left + 22) +
-           "\" y1=\"" + FormatNumber("%.1f", ly) + "\" y2=\"" + FormatNumber("%.1f", ly) + "\" stroke=\"" +
-           colour + "\" stroke-width=\"1.5\"" + (series.dashed ? " stroke-dasharray=\"5,3\"" : "") +
-           "/>\n<text x=\"" + FormatNumber("%.1f", left + 28) + "\" y=\"" + FormatNumber("%.1f", ly + 4) +
+           "\" y1=\"" + FormatNumber("%.1f", ly) + "\" y2=\"" + FormatNumber("%.1f", ly) + stroke +
+           (series.line ? "" : " stroke-opacity=\"0\"") + "/>\n" +
+           (series.line ? "" : "<circle cx=\"" + FormatNumber("%.1f", left + 11) + "\" cy=\"" +
+                                   FormatNumber("%.1f", ly) + "\" r=\"3\" fill=\"" + colour + "\"/>\n") +
+           "<text x=\"" + FormatNumber("%.1f", left + 28) + "\" y=\"" + FormatNumber("%.1f", ly + 4) +
            "\">" + EscapeHtml(series.name) + "</text>\n";
   }
   svg += "</svg>\n";

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <utility>
@@ -14,6 +13,7 @@
 
 #include "base64.h"
 #include "edgefit/core/atomic_file.h"
+#include "edgefit/report/three_js.h"
 #include "model_distance.h"
 #include "report_page.h"
 #include "station_image.h"
@@ -60,13 +60,6 @@ std::string Palette(const FitReportOptions& options) {
     rgb.insert(rgb.end(), c.begin(), c.end());
   }
   return Base64(rgb);
-}
-
-std::string ThreePath(const FitReportOptions& options) {
-  return options.three_js_dir + "/three.min.js";
-}
-std::string OrbitControlsPath(const FitReportOptions& options) {
-  return options.three_js_dir + "/examples/js/controls/OrbitControls.js";
 }
 
 // The scan near the model (in `crop`, world), every stride-th valid point in
@@ -215,13 +208,7 @@ bool FitReportOptions::IsValid(std::string* error) const {
 }
 
 Status CheckFitReportScripts(const FitReportOptions& options) {
-  for (const std::string& script : {ThreePath(options), OrbitControlsPath(options)}) {
-    if (!std::ifstream(script).good()) {
-      return Status::Error("report: three.js not found: " + script +
-                           " (Debian's libjs-three; ./scripts/install-deps.sh installs it)");
-    }
-  }
-  return Status::Ok();
+  return CheckThreeJs(options.three_js_dir);
 }
 
 Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
@@ -235,10 +222,8 @@ Status WriteFitReport(const KinematicModel& model, const std::vector<double>& q,
   if (!station_corrections.empty() && station_corrections.size() != scans.scans.size()) {
     return Status::Error("report: one station correction per scan expected");
   }
-  EDGEFIT_RETURN_IF_ERROR(CheckFitReportScripts(options));
   std::string three, orbit;
-  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(ThreePath(options), &three));
-  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(OrbitControlsPath(options), &orbit));
+  EDGEFIT_RETURN_IF_ERROR(ReadThreeJs(options.three_js_dir, &three, &orbit));
   std::vector<Pose> T_world_scanner;  // as the fit registered them
   for (size_t s = 0; s < scans.scans.size(); ++s) {
     const Pose& as_written = scans.scans[s].T_world_scanner();

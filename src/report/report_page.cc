@@ -3,6 +3,7 @@
 #include <string>
 
 #include "html.h"
+#include "three_view.h"
 
 namespace edgefit {
 namespace {
@@ -32,16 +33,8 @@ td:first-child, th:first-child { text-align: left; }
 )css";
 
 constexpr char kScript[] = R"js(
-'use strict';
-const status = document.getElementById('status');
-window.addEventListener('error', e => { status.textContent = 'error: ' + e.message; });
-const data = JSON.parse(document.getElementById('data').textContent);
 const result = data.result;
 
-function decode(b64, Type) {
-  const bytes = Uint8Array.from(atob(b64), c => c.charCodeAt(0));
-  return new Type(bytes.buffer);
-}
 function el(tag, attrs, text) {
   const e = document.createElement(tag);
   for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
@@ -170,16 +163,6 @@ document.getElementById('pointinfo').textContent =
 })();
 
 // The 3D view.
-const view = document.getElementById('view');
-const renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
-renderer.setPixelRatio(window.devicePixelRatio || 1);
-renderer.setSize(view.clientWidth, view.clientHeight);
-view.prepend(renderer.domElement);
-const scene = new THREE.Scene();
-scene.background = new THREE.Color(0xffffff);
-scene.add(new THREE.HemisphereLight(0xffffff, 0x666666, 0.9));
-const sun = new THREE.DirectionalLight(0xffffff, 0.5); sun.position.set(1, 2, 3); scene.add(sun);
-
 const colours = new Float32Array(positions.length);
 for (let i = 0; i < dist.length; ++i) colour(dist[i] * 1e-4, colours, 3 * i);
 const cloudGeometry = new THREE.BufferGeometry();
@@ -295,13 +278,7 @@ render();
       ' mm from the model (not the model: accessories, jackets, surroundings)';
 })();
 
-// What the view drew, for whoever checks the page without eyes.
-const gl = renderer.getContext(), w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
-const pixels = new Uint8Array(4 * w * h);
-gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-let drawn = 0;
-for (let i = 0; i < pixels.length; i += 4) drawn += (pixels[i] & pixels[i + 1] & pixels[i + 2]) !== 255;
-if (!status.textContent.startsWith('error')) status.textContent = 'ok: ' + drawn + ' pixels drawn';
+if (!status.textContent.startsWith('error')) status.textContent = 'ok: ' + drawnPixels() + ' pixels drawn';
 )js";
 
 }  // namespace
@@ -344,7 +321,7 @@ std::string ReportPage(const std::string& title, const std::string& three_js,
   page += "<script type=\"application/json\" id=\"data\">" + EscapeScript(data_json) + "</script>\n";
   page += "<script>" + EscapeScript(three_js) + "</script>\n";
   page += "<script>" + EscapeScript(orbit_controls_js) + "</script>\n";
-  page += std::string("<script>") + kScript + "</script>\n</body></html>\n";
+  page += std::string("<script>") + kThreeViewScript + kScript + "</script>\n</body></html>\n";
   return page;
 }
 

@@ -12,6 +12,7 @@
 #include "edgefit/model/urdf_loader.h"
 #include "edgefit/world/background_voxels.h"
 #include "edgefit/world/collision_pairs.h"
+#include "clearance_impl.h"
 #include "fcl_mesh.h"
 #include "least_distance.h"
 
@@ -28,47 +29,6 @@ bool ClearanceOptions::IsValid(std::string* error) const {
   if (bad != nullptr) *error = bad;
   return bad == nullptr;
 }
-
-struct ClearanceWorld::Impl {
-  KinematicModel cell;
-  std::vector<double> q_scanned;
-  std::vector<std::string> machines;
-  std::string machine;                         // the one checked
-  std::string prefix;                          // "<machine>_"
-  std::vector<std::unique_ptr<FclMesh>> meshes;  // per cell link; null without a mesh
-  std::string background_path;                 // background.bt; empty: none
-  struct Sphere {
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // link frame [m]
-    double radius = 0.0;                               // [m], around the link's mesh
-  };
-  std::vector<Sphere> spheres;                 // per cell link
-  double max_distance = 0.0;                   // [m] the background's distances are capped at
-  std::vector<int> moving;                     // machine links with meshes that move off its base
-  std::vector<int> own;                        // machine links with meshes
-  // Pairs (own link, other machine's link as scanned) that cell.srdf does
-  // not disable.
-  std::vector<std::tuple<int, int, Pose>> others;
-  std::vector<std::pair<int, int>> self_pairs;
-  std::map<std::string, int> joints;           // own joint name -> cell joint (independent)
-  std::vector<std::string> joint_names;
-
-  const std::string& LinkName(int l) const { return cell.links()[static_cast<size_t>(l)].name; }
-  // The last posture measured in a run of waypoints (Check): its links'
-  // poses and distances, which bound where the next posture's searches
-  // start, and its self pairs' distances, kept while a pair's pose is.
-  struct Previous {
-    std::vector<Pose> T;
-    PostureClearance clearance;
-    PairCache self;  // a slot per self pair
-  };
-  // Distances at one posture; with `first_only`, stops at the first contact.
-  // `previous` (may be null; not with first_only): read, then set to this
-  // posture.
-  PostureClearance Measure(const std::vector<double>& q, bool first_only, const FclMesh* background,
-                           Previous* previous = nullptr) const;
-  // The box the moving links' spheres sweep over the states.
-  Eigen::AlignedBox3d Reach(const std::vector<std::vector<double>>& states) const;
-};
 
 ClearanceWorld::ClearanceWorld() : impl_(std::make_unique<Impl>()) {}
 ClearanceWorld::~ClearanceWorld() = default;

@@ -42,6 +42,19 @@ TEST(ChartTest, AMissingValueLeavesAGapAndCategoriesAreLabels) {
   EXPECT_NE(svg.find("&lt;cauchy&gt;"), std::string::npos);
   EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
   EXPECT_EQ(svg.find("nan"), std::string::npos) << svg;
+  EXPECT_EQ(Count(svg, "<polyline"), 3u);  // the conveyor's line broken at its gap
+}
+
+TEST(ChartTest, MarkersOnlyOrLineOnly) {
+  Chart chart;
+  chart.series = {{"distance", {1, 2, 3, 4}, {5, 6, 7, 8}, false},
+                  {"collision", {1, 2, 3, 4}, {std::nan(""), 0, 0, std::nan("")}, false}};
+  chart.series[0].markers = false;
+  chart.series[1].line = false;
+  const std::string svg = SvgChart(chart);
+  EXPECT_EQ(Count(svg, "<polyline"), 1u);
+  EXPECT_EQ(Count(svg, "<circle"), 3u);  // two collisions and the legend's marker
+  EXPECT_NE(svg.find("viewBox=\"0 0 600 360\""), std::string::npos);  // scales with CSS
 }
 
 }  // namespace

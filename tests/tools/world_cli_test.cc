@@ -93,4 +93,48 @@ TEST_F(CliTest, WorldFromTwoResults) {
   ExpectBadInput("clearance --world=" + Path("absent"), "absent: not a folder");
 }
 
+// edgefit clearance --out_report: the page shows the world (the wall
+// scanned before the arm, the arm at each waypoint) and opens in a browser.
+TEST_F(CliTest, ClearanceReportShowsTheWorld) {
+  const std::string result = Write("arm.json", Result("0.2", true));
+  std::string wall = "ply\nformat ascii 1.0\nelement vertex 20000\nproperty float x\nproperty float y\n"
+                     "property float z\nend_header\n";
+  for (int i = 0; i < 200; ++i) {
+    for (int k = 0; k < 100; ++k) wall += "4.6 " + std::to_string(-1.0 + 0.02 * i) + " " + std::to_string(0.02 * k) + "\n";
+  }
+  const std::string scan = Write("wall.ply", wall);
+  const RunResult w = Run("world --result=" + result + " --name=arm --scan=" + scan + " --out_dir=" + Path("world"));
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  Write("traj.csv", "joint_1,joint_2\n0.1,0.2\n-0.6,0.9\n");
+  const std::string report = Path("clearance.html");
+  const RunResult c = Run("clearance --world=" + Path("world") + " --trajectory=" + Path("traj.csv") +
+                          " --out_report=" + report);
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_NE(c.out.find("report: " + report), std::string::npos) << c.out;
+  const std::string page = Slurp(report);
+  const std::string open = "<script type=\"application/json\" id=\"data\">";
+  const size_t from = page.find(open) + open.size();
+  const nlohmann::json data = nlohmann::json::parse(page.substr(from, page.find("</script>", from) - from));
+  EXPECT_EQ(data["machine"], "arm");
+  ASSERT_EQ(data["notes"].size(), 2u);
+  EXPECT_NE(data["notes"][0].get<std::string>().find("free"), std::string::npos);
+  int background = 0, links = 0;
+  for (const nlohmann::json& part : data["parts"]) {
+    background += part["kind"] == "background";
+    links += part["kind"] == "machine" && part["machine"] == "arm";
+  }
+  EXPECT_EQ(background, 1);
+  EXPECT_EQ(links, 9);  // the bundled robot's links with meshes
+  EXPECT_NE(page.find("the outer faces of its 20 mm voxels"), std::string::npos);
+  ExpectBadInput("clearance --world=" + Path("world") + " --out_report=" + Path("absent/r.html"), "absent");
+
+  if (!HaveBrowser()) GTEST_SKIP() << "chromium is not installed (./scripts/install-deps.sh installs it)";
+  std::string dom;
+  const std::string status = BrowserStatus(report, &dom);
+  EXPECT_EQ(status.rfind("ok: ", 0), 0u) << status;
+  EXPECT_NE(status.find(" pixels drawn, " + std::to_string(data["parts"].size()) + " parts"), std::string::npos)
+      << status;
+  EXPECT_GT(std::atoi(status.c_str() + 4), 5000) << status;
+}
+
 }  // namespace

@@ -12,6 +12,8 @@ struct ChartSeries {
   std::string name;
   std::vector<double> x, y;  // same length; a non-finite y leaves a gap
   bool dashed = false;
+  bool line = true;     // a line through the points (broken at gaps)
+  bool markers = true;  // a marker on each point (hover: its value)
 };
 
 struct Chart {

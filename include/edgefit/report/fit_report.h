@@ -23,6 +23,7 @@
 #include "edgefit/core/status.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/report/three_js.h"
 #include "edgefit/scan/organized_scan.h"
 
 namespace edgefit {
@@ -50,9 +51,7 @@ struct FitReportOptions {
   // a lattice have none (the page says so).
   bool edge_map = true;
   EdgeDetectionOptions edges;
-  // Where Debian's libjs-three installs three.min.js and
-  // examples/js/controls/OrbitControls.js.
-  std::string three_js_dir = "/usr/share/javascript/three";
+  std::string three_js_dir = kDebianThreeJsDir;  // three.js (three_js.h)
 
   bool IsValid(std::string* error) const;
 };

@@ -38,6 +38,7 @@
 
 #include "edgefit/core/status.h"
 #include "edgefit/model/kinematic_model.h"
+#include "edgefit/report/world_report.h"
 
 namespace edgefit {
 
@@ -66,6 +67,21 @@ struct PostureClearance {
   // The colliding pair: cell.urdf link names, or "background".
   std::string collision_a, collision_b;
   Eigen::Vector3d p_world_collision = Eigen::Vector3d::Zero();  // a point where they meet [m]
+};
+
+// One line on a collision: the pair, where, and how far along the way from
+// the previous waypoint ("" when c is not colliding).
+std::string DescribeCollision(const PostureClearance& c);
+
+// What the picture of a check shows (ClearanceWorld::Picture).
+struct ClearancePictureOptions {
+  // [m] The background within this of where the machine's moving links go.
+  double margin = 0.5;
+  // The background's surface at most this many triangles: its voxels are
+  // merged 2x2x2 until it fits (a page of 10-20 MB that stays fluid).
+  size_t max_background_triangles = 400000;
+
+  bool IsValid(std::string* error) const;
 };
 
 class ClearanceWorld {
@@ -98,6 +114,16 @@ class ClearanceWorld {
   // *status: one line when background.bt cannot be read.
   std::vector<PostureClearance> Check(const std::vector<std::vector<double>>& waypoints,
                                       const ClearanceOptions& options, Status* status) const;
+
+  // The check as a picture (report/world_report.h): the background's
+  // surface near the way, every machine's links with their attachments
+  // as scanned, the machine checked at each waypoint, each waypoint's
+  // distances and collision (`results`, Check's for `waypoints`), and the
+  // clearance along the waypoints as a plot. One line when background.bt
+  // cannot be read or results do not match the waypoints.
+  Status Picture(const std::vector<std::vector<double>>& waypoints,
+                 const std::vector<PostureClearance>& results, const ClearancePictureOptions& options,
+                 WorldReport* report) const;
 
  private:
   struct Impl;
