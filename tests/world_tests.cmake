@@ -1,7 +1,7 @@
 # The planning world written from fitted machines, and its clearance (src/world).
 edgefit_add_test(world_test SOURCES world/planning_world_test.cc world/clearance_test.cc
-  world/least_distance_test.cc
-  LIBS edgefit::world edgefit::io tinyxml2::tinyxml2 octomap)
+  world/least_distance_test.cc world/scanned_world_test.cc
+  LIBS edgefit::world edgefit::scanner edgefit::scene edgefit::io tinyxml2::tinyxml2 octomap)
 
 # edgefit clearance against an independent library: Open3D (Debian's
 # python3-open3d, for Debian's own python3) loads the world's files and

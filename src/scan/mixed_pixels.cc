@@ -89,6 +89,79 @@ std::vector<std::vector<uint8_t>> FindMixedPixels(const ScanSet& scans,
   return mixed;
 }
 
+size_t MarkSilhouetteMixedPixels(const ScanSet& scans, const std::vector<std::vector<uint8_t>>& object,
+                                 const MixedPixelOptions& options, int radius,
+                                 std::vector<std::vector<uint8_t>>* mixed) {
+  constexpr int kSilhouetteLines = 2;
+  size_t added = 0;
+  for (size_t s = 0; s < scans.scans.size(); ++s) {
+    const OrganizedScan& scan = scans.scans[s];
+    std::vector<uint8_t>& out = (*mixed)[s];
+    if (!scan.organized()) continue;
+    const int rows = scan.rows(), cols = scan.cols();
+    const auto inside = [&](int row, int col) { return row >= 0 && row < rows && col >= 0 && col < cols; };
+    // Range of a cell not of the object, NaN when missing, of the object or off the grid.
+    const auto behind = [&](int row, int col) -> double {
+      if (!inside(row, col)) return std::nan("");
+      const size_t i = scan.Index(row, col);
+      return scan.IsValid(i) && object[s][i] == 0 ? static_cast<double>(scan.point_scanner(i).norm())
+                                                  : std::nan("");
+    };
+    const double step = std::max(std::abs(scan.lattice().row_step()), std::abs(scan.lattice().col_step()));
+    // Only the grid's rectangle around the object's cells can hold any.
+    int row_lo = rows, row_hi = -1, col_lo = cols, col_hi = -1;
+    for (size_t i = 0; i < object[s].size(); ++i) {
+      if (object[s][i] == 0) continue;
+      row_lo = std::min(row_lo, scan.RowOf(i));
+      row_hi = std::max(row_hi, scan.RowOf(i));
+      col_lo = std::min(col_lo, scan.ColOf(i));
+      col_hi = std::max(col_hi, scan.ColOf(i));
+    }
+    if (row_hi < 0) continue;
+    row_lo = std::max(0, row_lo - radius);
+    row_hi = std::min(rows - 1, row_hi + radius);
+    col_lo = std::max(0, col_lo - radius);
+    col_hi = std::min(cols - 1, col_hi + radius);
+    constexpr int kLines[8][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}, {0, -1}, {-1, 0}, {-1, -1}, {-1, 1}};
+    size_t found = 0;
+#pragma omp parallel for schedule(static) reduction(+ : found)
+    for (int col = col_lo; col <= col_hi; ++col) {
+      for (int row = row_lo; row <= row_hi; ++row) {
+        const double r = behind(row, col);
+        const size_t i = scan.Index(row, col);
+        if (std::isnan(r) || out[i] != 0) continue;
+        const double tol = std::max(options.tolerance, options.tolerance_per_spacing * r * step);
+        int lines = 0;
+        for (const auto& line : kLines) {
+          bool is_mixed = false;
+          const int dr = line[0], dc = line[1];
+          bool nearer_object = false;
+          for (int k = 1; k <= radius && !nearer_object; ++k) {
+            const int orow = row - k * dr, ocol = col - k * dc;
+            if (!inside(orow, ocol)) break;
+            const size_t o = scan.Index(orow, ocol);
+            nearer_object = object[s][o] != 0 && scan.IsValid(o) && scan.point_scanner(o).norm() < r - tol;
+          }
+          if (!nearer_object) continue;
+          for (int k = 1; k <= radius && !is_mixed; ++k) {
+            const double b1 = behind(row + k * dr, col + k * dc), b2 = behind(row + (k + 1) * dr, col + (k + 1) * dc);
+            // The extrapolation's noise grows with k: sqrt((k+1)^2 + k^2) range sigmas.
+            const double spread = std::sqrt(static_cast<double>((k + 1) * (k + 1) + k * k) / 5.0);
+            is_mixed = r < b1 - k * (b2 - b1) - spread * tol;  // false when either is NaN
+          }
+          lines += is_mixed;
+        }
+        if (lines >= kSilhouetteLines) {
+          out[i] = 1;
+          ++found;
+        }
+      }
+    }
+    added += found;
+  }
+  return added;
+}
+
 ScanSet WithoutMixedPixels(const ScanSet& scans, const MixedPixelOptions& options,
                            size_t* removed) {
   const std::vector<std::vector<uint8_t>> mixed = FindMixedPixels(scans, options, removed);

@@ -28,12 +28,17 @@ Status WorldBackground(const std::vector<double>& removal, const WorldBackground
     std::vector<std::vector<uint8_t>> marks;
     EDGEFIT_RETURN_IF_ERROR(MarkModelPoints(*scans, *m.model, m.q, m.T_world_base, model_points, &marks));
     const std::vector<std::vector<uint8_t>> own = marks;
+    if (options.drop_mixed_pixels) {
+      summary->silhouette_mixed_pixels +=
+          MarkSilhouetteMixedPixels(*scans, own, options.mixed_pixels, options.silhouette_cells, &mixed);
+    }
     EDGEFIT_RETURN_IF_ERROR(
         MarkAttachedPoints(*scans, *m.model, m.q, m.T_world_base, options.attached, &marks));
     std::vector<Eigen::Vector3f> riding;
     for (size_t s = 0; s < scans->scans.size(); ++s) {
       for (size_t c = 0; c < marks[s].size(); ++c) {
-        if (marks[s][c] != 0 && own[s][c] == 0 && scans->scans[s].IsValid(c)) {
+        const bool is_mixed = !mixed.empty() && mixed[s][c] != 0;  // leaves, rides on nothing
+        if (marks[s][c] != 0 && own[s][c] == 0 && !is_mixed && scans->scans[s].IsValid(c)) {
           riding.push_back(scans->scans[s].PointWorld(c).cast<float>());
         }
       }

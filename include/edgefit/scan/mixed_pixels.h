@@ -74,6 +74,22 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
 std::vector<std::vector<uint8_t>> FindMixedPixels(const ScanSet& scans,
                                                   const MixedPixelOptions& options, size_t* count);
 
+// The mixed pixels at the silhouette of a known object (a fitted machine),
+// which the tests above miss where a band of them ramps evenly from the
+// object to what lies behind it: a cell not of the object is one when,
+// along a row, a column or a diagonal of its grid, a cell of the object
+// within `radius` cells on one side lies nearer than it, and on the other
+// side the surface behind (two cells, k and k + 1 away for some k up to
+// `radius`, not of the object), extrapolated back to the cell, lies
+// farther, each by more than the tolerance above. A surface between the
+// object and what is behind keeps all but such a band of `radius` cells at
+// its edges. `object`: per scan, per cell, nonzero for the object's
+// cells; sets (*mixed)[s][c] = 1 for those found (same shape) and returns
+// how many it set that were not set.
+size_t MarkSilhouetteMixedPixels(const ScanSet& scans, const std::vector<std::vector<uint8_t>>& object,
+                                 const MixedPixelOptions& options, int radius,
+                                 std::vector<std::vector<uint8_t>>* mixed);
+
 // A copy of `scans` with every mixed pixel a missing cell; *removed counts
 // them.
 ScanSet WithoutMixedPixels(const ScanSet& scans, const MixedPixelOptions& options, size_t* removed);

@@ -6,7 +6,9 @@
 //      geometry of the link they ride on (AttachedGeometry,
 //      WorldMachine::attached);
 //   2. mixed pixels (a beam that fell on two surfaces) leave them: they
-//      float between surfaces, at a machine's silhouette its ghost;
+//      float between surfaces, at a machine's silhouette its ghost
+//      (FindMixedPixels, and MarkSilhouetteMixedPixels at each machine's
+//      silhouette); they ride on nothing;
 //   3. pieces of voxels that float beside a machine on nothing else leave
 //      them (FloatingVoxels): what is left there of the machine.
 // The voxels within carve_margin of a machine as scanned leave the
@@ -29,6 +31,9 @@ struct WorldBackgroundOptions {
   double voxel = 0.02;             // [m] the attachments' and the pieces' voxels
   bool drop_mixed_pixels = true;
   MixedPixelOptions mixed_pixels;
+  // Mixed pixels at a machine's silhouette are sought this many cells from
+  // it: the beam's footprint spans 2-3 cells at 1.7 mm.
+  int silhouette_cells = 3;
   double floating = 0.3;           // [m] a floating piece lies wholly within this; 0: none leaves
   AttachedPointsOptions attached;
 };
@@ -36,7 +41,8 @@ struct WorldBackgroundOptions {
 struct WorldBackgroundSummary {
   size_t machine_points = 0;           // the machines' and their attached points
   std::vector<size_t> riding;          // per machine: its attached points
-  size_t mixed_pixels = 0;
+  size_t mixed_pixels = 0;             // all of them, those at the silhouettes included
+  size_t silhouette_mixed_pixels = 0;  // found at the machines' silhouettes only
   size_t floating_voxels = 0, floating_points = 0;
 };
 
