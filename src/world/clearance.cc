@@ -213,7 +213,8 @@ PostureClearance ClearanceWorld::Impl::Measure(const std::vector<double>& q, boo
     return std::isfinite(last) ? last + factor * moved : PostureClearance::kNone;
   };
   const auto pair = [&](int a, int b, const FclMesh* mb, const Pose* Tb, int cache) {
-    MeshPair p{0.0, a, b, mesh(a), &pose(a), mb, Tb, cache};
+    const Sphere& sphere = spheres[static_cast<size_t>(a)];
+    MeshPair p{0.0, a, b, mesh(a), &pose(a), mb, Tb, cache, sphere.centre, sphere.radius};
     if (b >= 0) {
       const Sphere& sa = spheres[static_cast<size_t>(a)];
       const Sphere& sb = spheres[static_cast<size_t>(b)];
@@ -235,26 +236,25 @@ PostureClearance ClearanceWorld::Impl::Measure(const std::vector<double>& q, boo
     return first_only && c.colliding;
   };
   const Pose identity = Pose::Identity();
+  PairCache* cache = previous != nullptr ? &previous->pairs : nullptr;
+  int slot = 0;  // the pairs' cache slots: background, other machines, self (PairSlots)
   std::vector<MeshPair> pairs;
   if (!background_path.empty()) c.distance_to_background = max_distance;
   if (background != nullptr) {
-    for (const int l : moving) pairs.push_back(pair(l, -1, background, &identity, -1));
-    if (take(&c.distance_to_background, pairs, first_cap(&PostureClearance::distance_to_background, 1.0), nullptr)) {
+    for (const int l : moving) pairs.push_back(pair(l, -1, background, &identity, slot++));
+    if (take(&c.distance_to_background, pairs, first_cap(&PostureClearance::distance_to_background, 1.0), cache)) {
       return c;
     }
   }
+  slot = static_cast<int>(moving.size());
   pairs.clear();
-  for (const auto& [l, o, To] : others) pairs.push_back(pair(l, o, mesh(o), &To, -1));
-  if (take(&c.distance_to_machines, pairs, first_cap(&PostureClearance::distance_to_machines, 1.0), nullptr)) {
+  for (const auto& [l, o, To] : others) pairs.push_back(pair(l, o, mesh(o), &To, slot++));
+  if (take(&c.distance_to_machines, pairs, first_cap(&PostureClearance::distance_to_machines, 1.0), cache)) {
     return c;
   }
   pairs.clear();
-  for (size_t i = 0; i < self_pairs.size(); ++i) {
-    const auto& [a, b] = self_pairs[i];
-    pairs.push_back(pair(a, b, mesh(b), &pose(b), static_cast<int>(i)));
-  }
-  take(&c.self_distance, pairs, first_cap(&PostureClearance::self_distance, 2.0),
-       previous != nullptr ? &previous->self : nullptr);
+  for (const auto& [a, b] : self_pairs) pairs.push_back(pair(a, b, mesh(b), &pose(b), slot++));
+  take(&c.self_distance, pairs, first_cap(&PostureClearance::self_distance, 2.0), cache);
   if (previous != nullptr) {
     previous->T = T;
     previous->clearance = c;
@@ -320,7 +320,7 @@ std::vector<PostureClearance> ClearanceWorld::Check(const std::vector<std::vecto
 #pragma omp for schedule(static, kRun)
   for (int64_t i = 0; i < count; ++i) {
     const size_t k = static_cast<size_t>(i);
-    if (i % kRun == 0) previous = {{}, {}, PairCache(w.self_pairs.size())};
+    if (i % kRun == 0) previous = {{}, {}, PairCache(w.PairSlots())};
     PostureClearance& at = out[k];
     at = w.Measure(waypoints[k], /*first_only=*/false, background.get(), &previous);
     at.collision_fraction = at.colliding ? 1.0 : 0.0;

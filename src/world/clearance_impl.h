@@ -41,14 +41,18 @@ struct ClearanceWorld::Impl {
   std::map<std::string, int> joints;           // own joint name -> cell joint (independent)
   std::vector<std::string> joint_names;
 
+  // A cache slot per pair: moving link and background, own and other
+  // machine's link, self pair.
+  size_t PairSlots() const { return moving.size() + others.size() + self_pairs.size(); }
   const std::string& LinkName(int l) const { return cell.links()[static_cast<size_t>(l)].name; }
   // The last posture measured in a run of waypoints (Check): its links'
   // poses and distances, which bound where the next posture's searches
-  // start, and its self pairs' distances, kept while a pair's pose is.
+  // start, and what each pair's search found, a bound on the pair at the
+  // next posture (least_distance.h).
   struct Previous {
     std::vector<Pose> T;
     PostureClearance clearance;
-    PairCache self;  // a slot per self pair
+    PairCache pairs;  // PairSlots() slots
   };
   // Distances at one posture; with `first_only`, stops at the first contact.
   // `previous` (may be null; not with first_only): read, then set to this

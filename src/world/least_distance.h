@@ -1,11 +1,14 @@
 // The least distance over pairs of posed meshes (fcl_mesh.h), exact, sought
-// so that far pairs cost little: pairs by the least distance their bounding
-// spheres allow, nearest first, in passes whose cap grows 4-fold from a
+// so that far pairs cost little: pairs by a least distance they may have
+// (their bounding spheres', and their cache slot's, below), nearest first,
+// in passes whose cap grows 4-fold from a
 // first cap (a bound on the answer when one is known, else 1 cm). A pass
 // seeks each pair's distance only below the cap, or the least found, which
 // FCL prunes at once where the pair is farther; the search ends with a pass
-// that finds one below its cap, or with the pass without a cap. A pair whose
-// relative pose is the one its cache slot holds takes the slot's answer.
+// that finds one below its cap, or with the pass without a cap. A pair with
+// a cache slot is bounded also by what the slot found, less how far mesh a
+// can have moved relative to b since (a run of waypoints seldom brings a
+// far pair near); one whose relative pose is the slot's takes its answer.
 #ifndef EDGEFIT_WORLD_LEAST_DISTANCE_H_
 #define EDGEFIT_WORLD_LEAST_DISTANCE_H_
 
@@ -17,9 +20,10 @@
 
 namespace edgefit {
 
-// Mesh a at T_a and mesh b at T_b (borrowed); `bound` [m]: the least
-// distance their spheres allow; a, b: the caller's names for them;
-// `cache`: the pair's slot in a PairCache, or -1.
+// Mesh a at T_a and mesh b at T_b (borrowed); `bound` [m]: a least
+// distance they may have (their spheres'); a, b: the caller's names for
+// them; `cache`: the pair's slot in a PairCache, or -1; centre_a, radius_a:
+// a sphere around mesh a in its frame [m].
 struct MeshPair {
   double bound = 0.0;
   int a = -1, b = -1;
@@ -28,13 +32,19 @@ struct MeshPair {
   const FclMesh* mesh_b = nullptr;
   const Pose* T_b = nullptr;
   int cache = -1;
+  Eigen::Vector3d centre_a = Eigen::Vector3d::Zero();
+  double radius_a = 0.0;
 };
 
-// Per slot: a pair's relative pose (b seen from a) and what was found
-// there: the distance when below the limit sought, else that limit.
+// Per slot: a pair's relative pose (a seen from b) and what was found
+// there: the distance when below the limit sought, else that limit; a
+// bound below the distance either way.
 class PairCache {
  public:
   explicit PairCache(size_t slots = 0) : slots_(slots) {}
+  // A bound below the distance of `pair` now: the slot's, less how far
+  // mesh a's sphere has moved relative to b since (0 without a slot).
+  double LowerBound(const MeshPair& pair) const;
   // The distance of `pair` below `limit`, from the slot when the pose is
   // its own (within 1e-12), else from FCL (and kept).
   double Distance(const MeshPair& pair, double limit);
@@ -42,9 +52,10 @@ class PairCache {
  private:
   struct Slot {
     bool valid = false;
-    Pose T_a_b = Pose::Identity();
+    Pose T_b_a = Pose::Identity();
     double found = 0.0, limit = 0.0;
   };
+  static Pose Relative(const MeshPair& pair) { return pair.T_b->inverse() * *pair.T_a; }
   std::vector<Slot> slots_;
 };
 

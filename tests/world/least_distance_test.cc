@@ -1,6 +1,7 @@
 // The least distance over pairs of posed meshes (src/world/least_distance.h):
-// exact whatever the first cap, the first contact in sphere order, and a
-// cached pair's answer kept only while its relative pose is.
+// exact whatever the first cap, the first contact in sphere order, a
+// cached pair's answer kept only while its relative pose is, and its bound
+// at a new pose below the distance there.
 #include "src/world/least_distance.h"
 
 #include <gtest/gtest.h>
@@ -67,6 +68,35 @@ TEST(LeastDistanceTest, ACachedPairKeepsItsDistanceWhileItsPoseDoes) {
   b.translation().x() = 3.0;
   EXPECT_EQ(cache.Distance(pair, 1.0), 1.0);
   EXPECT_NEAR(cache.Distance(pair, kInf), 2.0, 1e-12);
+}
+
+TEST(LeastDistanceTest, ACachedPairBoundsItsDistanceWhereverItMoves) {
+  const FclMesh cube(MakeBoxMesh(Eigen::Vector3d::Ones()));
+  Pose a = At(0.0), b = At(3.0);
+  PairCache cache(1);
+  // Mesh a's sphere: centre 0, radius sqrt(3)/2 (the cube's corners).
+  const MeshPair pair{0.0, 0, 1, &cube, &a, &cube, &b, 0, Eigen::Vector3d::Zero(), std::sqrt(3.0) / 2};
+  EXPECT_EQ(cache.LowerBound(pair), 0.0);  // nothing found yet
+  EXPECT_NEAR(cache.Distance(pair, kInf), 2.0, 1e-12);
+  // a slid 0.5 m toward b: at most 0.5 nearer.
+  a.translation().x() = 0.5;
+  EXPECT_NEAR(cache.LowerBound(pair), 1.5, 1e-12);
+  // a turned 0.1 rad about its centre: its corners moved up to 0.1 * sqrt(3)/2.
+  a.linear() = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const double bound = cache.LowerBound(pair);
+  EXPECT_NEAR(bound, 1.5 - 0.1 * std::sqrt(3.0) / 2, 1e-12);
+  EXPECT_LE(bound, cube.Distance(a, cube, b, kInf));
+  // Known only beyond a limit: the limit is the bound.
+  a = At(0.2);  // 1.8 m apart
+  EXPECT_EQ(cache.Distance(pair, 1.0), 1.0);
+  EXPECT_NEAR(cache.LowerBound(pair), 1.0, 1e-12);
+  // Over a run of poses, the search with the cache finds what it finds without.
+  for (int k = 0; k < 40; ++k) {
+    a.translation() = Eigen::Vector3d(0.05 * k, 0.3 * std::sin(0.3 * k), 0.0);
+    a.linear() = Eigen::AngleAxisd(0.07 * k, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const double with = FindLeastDistance({pair}, kInf, kInf, &cache).distance;
+    EXPECT_NEAR(with, FindLeastDistance({pair}, kInf, kInf, nullptr).distance, 1e-12) << k;
+  }
 }
 
 }  // namespace
