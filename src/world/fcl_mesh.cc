@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 #include "edgefit/model/point_triangle_distance.h"
@@ -19,20 +20,31 @@ namespace edgefit {
 constexpr size_t kContacts = 16;  // FCL's contacts weighed for a collision's point
 
 struct FclMesh::Impl {
+  TriangleMesh mesh;  // until the hierarchy is built from it
+  std::once_flag built;
   fcl::BVHModel<fcl::OBBRSSd> model;
+
+  // The hierarchy, built by the first query (once, whichever thread asks).
+  const fcl::BVHModel<fcl::OBBRSSd>* Model() {
+    std::call_once(built, [this] {
+      std::vector<fcl::Triangle> triangles;
+      triangles.reserve(mesh.triangles.size());
+      for (const Eigen::Vector3i& t : mesh.triangles) {
+        triangles.emplace_back(static_cast<size_t>(t[0]), static_cast<size_t>(t[1]),
+                               static_cast<size_t>(t[2]));
+      }
+      model.beginModel(static_cast<int>(triangles.size()), static_cast<int>(mesh.vertices.size()));
+      model.addSubModel(mesh.vertices, triangles);
+      model.endModel();
+      mesh = TriangleMesh();
+    });
+    return &model;
+  }
 };
 
 FclMesh::FclMesh(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
   CHECK(!mesh.empty());
-  std::vector<fcl::Triangle> triangles;
-  triangles.reserve(mesh.triangles.size());
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    triangles.emplace_back(static_cast<size_t>(t[0]), static_cast<size_t>(t[1]),
-                           static_cast<size_t>(t[2]));
-  }
-  impl_->model.beginModel(static_cast<int>(triangles.size()), static_cast<int>(mesh.vertices.size()));
-  impl_->model.addSubModel(mesh.vertices, triangles);
-  impl_->model.endModel();
+  impl_->mesh = mesh;
 }
 
 FclMesh::~FclMesh() = default;
@@ -44,8 +56,8 @@ double FclMesh::Distance(const Pose& T_world_this, const FclMesh& other, const P
   // FCL's traversal starts from the result's distance and only updates it
   // when nearer: beyond `bound` it prunes at once.
   result.min_distance = std::min(bound, std::numeric_limits<double>::max());
-  const double d = fcl::distance(&impl_->model, fcl::Transform3d(T_world_this.matrix()),
-                                 &other.impl_->model, fcl::Transform3d(T_world_other.matrix()),
+  const double d = fcl::distance(impl_->Model(), fcl::Transform3d(T_world_this.matrix()),
+                                 other.impl_->Model(), fcl::Transform3d(T_world_other.matrix()),
                                  request, result);
   return std::max(0.0, d);  // FCL gives -1 (or 0) for crossing meshes
 }
@@ -56,7 +68,7 @@ bool FclMesh::CollidesBox(const Pose& T_world_this, const Eigen::AlignedBox3d& b
   T_world_box.translation() = box_world.center();
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
-  fcl::collide(&impl_->model, fcl::Transform3d(T_world_this.matrix()), &box, T_world_box, request,
+  fcl::collide(impl_->Model(), fcl::Transform3d(T_world_this.matrix()), &box, T_world_box, request,
                result);
   return result.isCollision();
 }
@@ -67,7 +79,7 @@ bool FclMesh::Collides(const Pose& T_world_this, const FclMesh& other, const Pos
   request.enable_contact = p_world != nullptr;
   request.num_max_contacts = p_world != nullptr ? kContacts : 1;
   fcl::CollisionResultd result;
-  fcl::collide(&impl_->model, fcl::Transform3d(T_world_this.matrix()), &other.impl_->model,
+  fcl::collide(impl_->Model(), fcl::Transform3d(T_world_this.matrix()), other.impl_->Model(),
                fcl::Transform3d(T_world_other.matrix()), request, result);
   if (p_world == nullptr || result.numContacts() == 0) return result.isCollision();
   // FCL's point for triangles that cross is on both; for coplanar ones that

@@ -16,7 +16,8 @@ namespace edgefit {
 
 class FclMesh {
  public:
-  // The hierarchy of `mesh` (in its own frame; not empty).
+  // The hierarchy of `mesh` (in its own frame; not empty), built by the
+  // first query: a mesh never queried costs only its copy.
   explicit FclMesh(const TriangleMesh& mesh);
   ~FclMesh();
   FclMesh(const FclMesh&) = delete;
