@@ -61,6 +61,16 @@ echo "   the whole chain refined without the jackets; truth against fit"
 echo "(result: $out/result.json; joint states: $out/joint_states.yaml; calibrated URDF: $out/robot_fitted.urdf;"
 echo " open $out/robot_report.html in a browser: the scan against the fitted model, every joint's verdict)"
 echo
+echo "== edgefit world: the fitted robot as a world that planners load (cell.urdf and .srdf, joint states,"
+echo "   what rides on it as extra collision meshes, the scan less the robot as voxels and an OctoMap)"
+"$edgefit" world --result="$out/result.json" --name=robot --out_dir="$out/world"
+printf '# joint_2 leans the arm forward from where it stands (0.45 rad)\njoint_2\n0.45\n0.50\n0.55\n0.60\n0.65\n0.70\n' \
+  > "$out/trajectory.csv"
+echo
+echo "== edgefit clearance: that motion in the world (FCL); the gun meets the floor"
+"$edgefit" clearance --world="$out/world" --trajectory="$out/trajectory.csv" --out_report="$out/clearance.html"
+echo "(open $out/clearance.html: the world, the arm along the motion on a slider, the clearance plotted)"
+echo
 echo "== the bundled conveyor (paper Sec. 6): posture transfer, accessories, 3 scanners, 3 mm spacing"
 "$edgefit" scan --urdf=assets/conveyor/conveyor.urdf --posture=assets/conveyor/postures.json:transfer \
   --base=0.3,-0.4,-25 --accessories --spacing_mm=3 --seed=7 \
