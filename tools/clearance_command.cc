@@ -102,7 +102,9 @@ int RunClearance(const Command& command) {
     WorldReport report;
     report.title = "edgefit clearance: " + machine + " in " + FLAGS_world;
     report.lines = {
-        (FLAGS_trajectory.empty() ? std::string("--joints=") + FLAGS_joints : "--trajectory=" + FLAGS_trajectory) +
+        (!FLAGS_trajectory.empty() ? "--trajectory=" + FLAGS_trajectory
+         : FLAGS_joints.empty()    ? std::string("as scanned")
+                                   : "--joints=" + FLAGS_joints) +
             ": " + std::to_string(results.size()) + " waypoint(s), the way between checked every " +
             FormatNumber("%.2f deg / ", FLAGS_step_deg) + FormatNumber("%.1f mm", FLAGS_step_mm),
         first < 0 ? std::string("no collision")

@@ -213,10 +213,9 @@ PostureClearance ClearanceWorld::Impl::Measure(const std::vector<double>& q, boo
     return std::isfinite(last) ? last + factor * moved : PostureClearance::kNone;
   };
   const auto pair = [&](int a, int b, const FclMesh* mb, const Pose* Tb, int cache) {
-    const Sphere& sphere = spheres[static_cast<size_t>(a)];
-    MeshPair p{0.0, a, b, mesh(a), &pose(a), mb, Tb, cache, sphere.centre, sphere.radius};
+    const Sphere& sa = spheres[static_cast<size_t>(a)];
+    MeshPair p{0.0, a, b, mesh(a), &pose(a), mb, Tb, cache, sa.centre, sa.radius};
     if (b >= 0) {
-      const Sphere& sa = spheres[static_cast<size_t>(a)];
       const Sphere& sb = spheres[static_cast<size_t>(b)];
       p.bound = std::max(0.0, (pose(a) * sa.centre - *Tb * sb.centre).norm() - sa.radius - sb.radius);
     }
