@@ -16,7 +16,6 @@
 #include "edgefit/core/format.h"
 #include "edgefit/io/trajectory_csv.h"
 #include "edgefit/model/joint_values.h"
-#include "edgefit/report/three_js.h"
 #include "edgefit/report/world_report.h"
 #include "edgefit/world/clearance.h"
 
@@ -57,7 +56,7 @@ int RunClearance(const Command& command) {
   }
   if (!FLAGS_out_report.empty()) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckOutputPaths({FLAGS_out_report}));
-    EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckThreeJs(kDebianThreeJsDir));
+    EDGEFIT_RETURN_IF_ERROR_EXIT(command, CheckThreeJs(WorldReport().three_js_dir));
   }
   Progress("clearance: loading " + FLAGS_world);
   ClearanceWorld world;

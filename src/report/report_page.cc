@@ -9,16 +9,9 @@ namespace edgefit {
 namespace {
 
 constexpr char kStyle[] = R"css(
-body { font: 14px/1.4 sans-serif; margin: 0; color: #222; }
-header { padding: 10px 16px; background: #f4f4f4; border-bottom: 1px solid #ddd; }
-h1 { font-size: 18px; margin: 0 0 4px; }
 h2 { font-size: 15px; margin: 18px 0 6px; }
 .ok { color: #17803a; font-weight: bold; }
 .bad { color: #b3261e; font-weight: bold; }
-main { display: flex; flex-wrap: wrap; }
-#view { position: relative; flex: 1 1 640px; min-width: 480px; height: 620px; background: #fff; }
-#controls { position: absolute; top: 8px; left: 8px; background: rgba(255,255,255,.85);
-            padding: 6px 8px; border: 1px solid #ccc; border-radius: 4px; }
 #legend { position: absolute; bottom: 8px; right: 8px; max-width: 250px; background: rgba(255,255,255,.85);
           padding: 6px 8px; border: 1px solid #ccc; border-radius: 4px; font-size: 11px; }
 #legend canvas { display: block; margin: 3px 0; }
@@ -27,7 +20,6 @@ table { border-collapse: collapse; font-size: 13px; }
 td, th { border-bottom: 1px solid #e3e3e3; padding: 2px 8px; text-align: right; }
 td:first-child, th:first-child { text-align: left; }
 .verdict-ok { color: #17803a; } .verdict-bad { color: #b3261e; }
-#status { font-size: 11px; color: #888; padding: 4px 16px; }
 .histograms { display: flex; flex-wrap: wrap; gap: 8px; }
 .histograms figure { margin: 0; font-size: 12px; }
 )css";
@@ -288,8 +280,7 @@ std::string ReportPage(const std::string& title, const std::string& three_js,
   const std::string t = EscapeHtml(title);
   std::string page;
   page.reserve(data_json.size() + three_js.size() + orbit_controls_js.size() + 20000);
-  page += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" + t +
-          "</title>\n<style>" + kStyle + "</style></head>\n<body>\n";
+  page += ThreeViewPageHead(title, kStyle);
   page += "<header><h1>" + t + "</h1><div id=\"verdict\"></div><div id=\"base\"></div></header>\n";
   page += R"html(<main>
 <div id="view">
@@ -318,10 +309,7 @@ std::string ReportPage(const std::string& title, const std::string& three_js,
 </main>
 <div id="status">loading</div>
 )html";
-  page += "<script type=\"application/json\" id=\"data\">" + EscapeScript(data_json) + "</script>\n";
-  page += "<script>" + EscapeScript(three_js) + "</script>\n";
-  page += "<script>" + EscapeScript(orbit_controls_js) + "</script>\n";
-  page += std::string("<script>") + kThreeViewScript + kScript + "</script>\n</body></html>\n";
+  page += ThreeViewPageEnd(data_json, three_js, orbit_controls_js, kScript);
   return page;
 }
 

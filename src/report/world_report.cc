@@ -15,20 +15,12 @@ namespace edgefit {
 namespace {
 
 constexpr char kWorldStyle[] = R"css(
-body { font: 14px/1.4 sans-serif; margin: 0; color: #222; }
-header { padding: 10px 16px; background: #f4f4f4; border-bottom: 1px solid #ddd; }
-h1 { font-size: 18px; margin: 0 0 4px; }
 header p { margin: 2px 0; }
-main { display: flex; flex-wrap: wrap; }
-#view { position: relative; flex: 1 1 640px; min-width: 480px; height: 620px; background: #fff; }
-#controls { position: absolute; top: 8px; left: 8px; background: rgba(255,255,255,.85);
-            padding: 6px 8px; border: 1px solid #ccc; border-radius: 4px; }
 #side { flex: 1 1 420px; padding: 8px 16px 16px; max-height: 640px; overflow-y: auto; }
 #waypoint { width: 100%; }
 #side svg { max-width: 100%; height: auto; }
 #note { font-family: monospace; font-size: 12px; min-height: 3em; white-space: pre-wrap; }
 .swatch { display: inline-block; width: 12px; height: 12px; vertical-align: middle; margin-right: 4px; }
-#status { font-size: 11px; color: #888; padding: 4px 16px; }
 )css";
 
 constexpr char kWorldScript[] = R"js(
@@ -196,10 +188,8 @@ Status WriteWorldReport(const WorldReport& report, const std::string& path) {
                                {"notes", report.waypoint_notes},
                                {"collision_points", Base64(points)}};
 
-  const std::string title = EscapeHtml(report.title);
-  std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" +
-                     title + "</title>\n<style>" + kWorldStyle + "</style></head>\n<body>\n<header><h1>" +
-                     title + "</h1>\n";
+  std::string page = ThreeViewPageHead(report.title, kWorldStyle) + "<header><h1>" + EscapeHtml(report.title) +
+                     "</h1>\n";
   for (const std::string& line : report.lines) page += "<p>" + EscapeHtml(line) + "</p>\n";
   page += R"html(</header>
 <main>
@@ -221,10 +211,7 @@ Status WriteWorldReport(const WorldReport& report, const std::string& path) {
 )html";
   for (const Chart& chart : report.charts) page += SvgChart(chart, 560, 300);
   page += "</div>\n</main>\n<div id=\"status\">loading</div>\n";
-  page += "<script type=\"application/json\" id=\"data\">" + EscapeScript(data.dump()) + "</script>\n";
-  page += "<script>" + EscapeScript(three) + "</script>\n";
-  page += "<script>" + EscapeScript(orbit) + "</script>\n";
-  page += std::string("<script>") + kThreeViewScript + kWorldScript + "</script>\n</body></html>\n";
+  page += ThreeViewPageEnd(data.dump(), three, orbit, kWorldScript);
   return WriteStringAtomically(path, page);
 }
 

@@ -18,6 +18,21 @@ bool MixedPixelOptions::IsValid(std::string* error) const {
   return true;
 }
 
+namespace {
+
+// The grid's angular step: a cell's spacing is its range times it (0
+// without a lattice).
+double LatticeStep(const OrganizedScan& scan) {
+  return std::max(std::abs(scan.lattice().row_step()), std::abs(scan.lattice().col_step()));
+}
+
+// How far off a surface a cell at range r must lie to be taken as off it.
+double Tolerance(const MixedPixelOptions& options, double r, double step) {
+  return std::max(options.tolerance, options.tolerance_per_spacing * r * step);
+}
+
+}  // namespace
+
 std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixelOptions& options) {
   std::vector<uint8_t> mixed(scan.size(), 0);
   if (!scan.organized()) return mixed;
@@ -30,9 +45,7 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
     const size_t i = scan.Index(row, col);
     return scan.IsValid(i) ? static_cast<double>(scan.point_scanner(i).norm()) : std::nan("");
   };
-  // The cell's spacing is range * step (0 without a lattice).
-  const double step =
-      std::max(std::abs(scan.lattice().row_step()), std::abs(scan.lattice().col_step()));
+  const double step = LatticeStep(scan);
 
   // Row, column and the two diagonals.
   constexpr int kLines[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
@@ -41,7 +54,7 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
     for (int row = 0; row < rows; ++row) {
       const double r = range(row, col);
       if (std::isnan(r)) continue;
-      const double tol = std::max(options.tolerance, options.tolerance_per_spacing * r * step);
+      const double tol = Tolerance(options, r, step);
       int lines = 0;
       for (const auto& line : kLines) {
         const int dr = line[0], dc = line[1];
@@ -89,75 +102,83 @@ std::vector<std::vector<uint8_t>> FindMixedPixels(const ScanSet& scans,
   return mixed;
 }
 
+namespace {
+
+// The silhouette mixed pixels of one scan (MarkSilhouetteMixedPixels):
+// sets out[i] = 1 for those found where out[i] was 0; returns how many.
+size_t MarkSilhouetteMixedPixels(const OrganizedScan& scan, const std::vector<uint8_t>& object,
+                                 const MixedPixelOptions& options, int radius, std::vector<uint8_t>* out) {
+  if (!scan.organized()) return 0;
+  const int rows = scan.rows(), cols = scan.cols();
+  const auto inside = [&](int row, int col) { return row >= 0 && row < rows && col >= 0 && col < cols; };
+  // Range of a cell not of the object, NaN when missing, of the object or off the grid.
+  const auto behind = [&](int row, int col) -> double {
+    if (!inside(row, col)) return std::nan("");
+    const size_t i = scan.Index(row, col);
+    return scan.IsValid(i) && object[i] == 0 ? static_cast<double>(scan.point_scanner(i).norm()) : std::nan("");
+  };
+  // Whether a cell of the object lies within `radius` cells back along
+  // (dr, dc), nearer than r - tol.
+  const auto object_before = [&](int row, int col, int dr, int dc, double r, double tol) {
+    for (int k = 1; k <= radius && inside(row - k * dr, col - k * dc); ++k) {
+      const size_t o = scan.Index(row - k * dr, col - k * dc);
+      if (object[o] != 0 && scan.IsValid(o) && scan.point_scanner(o).norm() < r - tol) return true;
+    }
+    return false;
+  };
+  // Whether the surface k and k + 1 cells on along (dr, dc), extrapolated
+  // back to the cell, lies beyond r for some k up to `radius`; the
+  // extrapolation's noise grows with k: sqrt((k+1)^2 + k^2) range sigmas.
+  const auto surface_beyond = [&](int row, int col, int dr, int dc, double r, double tol) {
+    for (int k = 1; k <= radius; ++k) {
+      const double b1 = behind(row + k * dr, col + k * dc), b2 = behind(row + (k + 1) * dr, col + (k + 1) * dc);
+      const double spread = std::sqrt(static_cast<double>((k + 1) * (k + 1) + k * k) / 5.0);
+      if (r < b1 - k * (b2 - b1) - spread * tol) return true;  // false when either is NaN
+    }
+    return false;
+  };
+  // Only the grid's rectangle around the object's cells can hold any.
+  int row_lo = rows, row_hi = -1, col_lo = cols, col_hi = -1;
+  for (size_t i = 0; i < object.size(); ++i) {
+    if (object[i] == 0) continue;
+    row_lo = std::min(row_lo, scan.RowOf(i));
+    row_hi = std::max(row_hi, scan.RowOf(i));
+    col_lo = std::min(col_lo, scan.ColOf(i));
+    col_hi = std::max(col_hi, scan.ColOf(i));
+  }
+  if (row_hi < 0) return 0;
+  const double step = LatticeStep(scan);
+  constexpr int kLines[8][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}, {0, -1}, {-1, 0}, {-1, -1}, {-1, 1}};
+  constexpr int kSilhouetteLines = 2;
+  size_t found = 0;
+#pragma omp parallel for schedule(static) reduction(+ : found)
+  for (int col = std::max(0, col_lo - radius); col <= std::min(cols - 1, col_hi + radius); ++col) {
+    for (int row = std::max(0, row_lo - radius); row <= std::min(rows - 1, row_hi + radius); ++row) {
+      const double r = behind(row, col);
+      const size_t i = scan.Index(row, col);
+      if (std::isnan(r) || (*out)[i] != 0) continue;
+      const double tol = Tolerance(options, r, step);
+      int lines = 0;
+      for (const auto& line : kLines) {
+        lines += object_before(row, col, line[0], line[1], r, tol) && surface_beyond(row, col, line[0], line[1], r, tol);
+      }
+      if (lines >= kSilhouetteLines) {
+        (*out)[i] = 1;
+        ++found;
+      }
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
 size_t MarkSilhouetteMixedPixels(const ScanSet& scans, const std::vector<std::vector<uint8_t>>& object,
                                  const MixedPixelOptions& options, int radius,
                                  std::vector<std::vector<uint8_t>>* mixed) {
-  constexpr int kSilhouetteLines = 2;
   size_t added = 0;
   for (size_t s = 0; s < scans.scans.size(); ++s) {
-    const OrganizedScan& scan = scans.scans[s];
-    std::vector<uint8_t>& out = (*mixed)[s];
-    if (!scan.organized()) continue;
-    const int rows = scan.rows(), cols = scan.cols();
-    const auto inside = [&](int row, int col) { return row >= 0 && row < rows && col >= 0 && col < cols; };
-    // Range of a cell not of the object, NaN when missing, of the object or off the grid.
-    const auto behind = [&](int row, int col) -> double {
-      if (!inside(row, col)) return std::nan("");
-      const size_t i = scan.Index(row, col);
-      return scan.IsValid(i) && object[s][i] == 0 ? static_cast<double>(scan.point_scanner(i).norm())
-                                                  : std::nan("");
-    };
-    const double step = std::max(std::abs(scan.lattice().row_step()), std::abs(scan.lattice().col_step()));
-    // Only the grid's rectangle around the object's cells can hold any.
-    int row_lo = rows, row_hi = -1, col_lo = cols, col_hi = -1;
-    for (size_t i = 0; i < object[s].size(); ++i) {
-      if (object[s][i] == 0) continue;
-      row_lo = std::min(row_lo, scan.RowOf(i));
-      row_hi = std::max(row_hi, scan.RowOf(i));
-      col_lo = std::min(col_lo, scan.ColOf(i));
-      col_hi = std::max(col_hi, scan.ColOf(i));
-    }
-    if (row_hi < 0) continue;
-    row_lo = std::max(0, row_lo - radius);
-    row_hi = std::min(rows - 1, row_hi + radius);
-    col_lo = std::max(0, col_lo - radius);
-    col_hi = std::min(cols - 1, col_hi + radius);
-    constexpr int kLines[8][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}, {0, -1}, {-1, 0}, {-1, -1}, {-1, 1}};
-    size_t found = 0;
-#pragma omp parallel for schedule(static) reduction(+ : found)
-    for (int col = col_lo; col <= col_hi; ++col) {
-      for (int row = row_lo; row <= row_hi; ++row) {
-        const double r = behind(row, col);
-        const size_t i = scan.Index(row, col);
-        if (std::isnan(r) || out[i] != 0) continue;
-        const double tol = std::max(options.tolerance, options.tolerance_per_spacing * r * step);
-        int lines = 0;
-        for (const auto& line : kLines) {
-          bool is_mixed = false;
-          const int dr = line[0], dc = line[1];
-          bool nearer_object = false;
-          for (int k = 1; k <= radius && !nearer_object; ++k) {
-            const int orow = row - k * dr, ocol = col - k * dc;
-            if (!inside(orow, ocol)) break;
-            const size_t o = scan.Index(orow, ocol);
-            nearer_object = object[s][o] != 0 && scan.IsValid(o) && scan.point_scanner(o).norm() < r - tol;
-          }
-          if (!nearer_object) continue;
-          for (int k = 1; k <= radius && !is_mixed; ++k) {
-            const double b1 = behind(row + k * dr, col + k * dc), b2 = behind(row + (k + 1) * dr, col + (k + 1) * dc);
-            // The extrapolation's noise grows with k: sqrt((k+1)^2 + k^2) range sigmas.
-            const double spread = std::sqrt(static_cast<double>((k + 1) * (k + 1) + k * k) / 5.0);
-            is_mixed = r < b1 - k * (b2 - b1) - spread * tol;  // false when either is NaN
-          }
-          lines += is_mixed;
-        }
-        if (lines >= kSilhouetteLines) {
-          out[i] = 1;
-          ++found;
-        }
-      }
-    }
-    added += found;
+    added += MarkSilhouetteMixedPixels(scans.scans[s], object[s], options, radius, &(*mixed)[s]);
   }
   return added;
 }

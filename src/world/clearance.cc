@@ -30,6 +30,18 @@ bool ClearanceOptions::IsValid(std::string* error) const {
   return bad == nullptr;
 }
 
+std::string DescribeCollision(const PostureClearance& c) {
+  if (!c.colliding) return "";
+  std::string text = c.collision_a + " with " + c.collision_b +
+                     FormatNumber(" at (%.3f", c.p_world_collision.x()) +
+                     FormatNumber(", %.3f", c.p_world_collision.y()) +
+                     FormatNumber(", %.3f) m", c.p_world_collision.z());
+  if (c.collision_fraction < 1.0) {
+    text += FormatNumber(" (%.0f %% of the way from the previous waypoint)", 100.0 * c.collision_fraction);
+  }
+  return text;
+}
+
 ClearanceWorld::ClearanceWorld() : impl_(std::make_unique<Impl>()) {}
 ClearanceWorld::~ClearanceWorld() = default;
 

@@ -45,18 +45,6 @@ std::string Mm(double d) { return std::isfinite(d) ? FormatNumber("%.1f mm", 1e3
 
 }  // namespace
 
-std::string DescribeCollision(const PostureClearance& c) {
-  if (!c.colliding) return "";
-  std::string text = c.collision_a + " with " + c.collision_b +
-                     FormatNumber(" at (%.3f", c.p_world_collision.x()) +
-                     FormatNumber(", %.3f", c.p_world_collision.y()) +
-                     FormatNumber(", %.3f) m", c.p_world_collision.z());
-  if (c.collision_fraction < 1.0) {
-    text += FormatNumber(" (%.0f %% of the way from the previous waypoint)", 100.0 * c.collision_fraction);
-  }
-  return text;
-}
-
 bool ClearancePictureOptions::IsValid(std::string* error) const {
   if (!(margin >= 0.0) || !std::isfinite(margin)) *error = "margin must be >= 0";
   else if (max_background_triangles < 12) *error = "max_background_triangles must be >= 12";
@@ -157,6 +145,9 @@ Status ClearanceWorld::Picture(const std::vector<std::vector<double>>& waypoints
   ChartSeries background{"to the background", {}, {}}, machines{"to the other machines", {}, {}},
       self{"between its own links", {}, {}}, hits{"collision (at the waypoint or on the way to it)", {}, {}};
   const double none = std::numeric_limits<double>::quiet_NaN();
+  const auto mm = [none](double d) { return std::isfinite(d) ? 1e3 * d : none; };
+  // Few waypoints: each its own tick, numbered from 1 as in the text output.
+  const bool by_name = results.size() <= 20;
   for (size_t k = 0; k < results.size(); ++k) {
     const PostureClearance& c = results[k];
     report->waypoint_notes.push_back(
@@ -164,12 +155,9 @@ Status ClearanceWorld::Picture(const std::vector<std::vector<double>>& waypoints
         ", self " + Mm(c.self_distance) + "\n" +
         (c.colliding ? "COLLIDES: " + DescribeCollision(c) : std::string("free")));
     report->collision_points.push_back(c.colliding ? c.p_world_collision : Eigen::Vector3d::Constant(none));
-    // Few waypoints: each its own tick, numbered from 1 as in the text output.
-    const bool by_name = results.size() <= 20;
     if (by_name) chart.categories.push_back(std::to_string(k + 1));
     const double x = static_cast<double>(by_name ? k : k + 1);
     for (ChartSeries* s : {&background, &machines, &self, &hits}) s->x.push_back(x);
-    const auto mm = [none](double d) { return std::isfinite(d) ? 1e3 * d : none; };
     background.y.push_back(mm(c.distance_to_background));
     machines.y.push_back(mm(c.distance_to_machines));
     self.y.push_back(mm(c.self_distance));

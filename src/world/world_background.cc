@@ -29,8 +29,7 @@ Status WorldBackground(const std::vector<double>& removal, const WorldBackground
     EDGEFIT_RETURN_IF_ERROR(MarkModelPoints(*scans, *m.model, m.q, m.T_world_base, model_points, &marks));
     const std::vector<std::vector<uint8_t>> own = marks;
     if (options.drop_mixed_pixels) {
-      summary->silhouette_mixed_pixels +=
-          MarkSilhouetteMixedPixels(*scans, own, options.mixed_pixels, options.silhouette_cells, &mixed);
+      MarkSilhouetteMixedPixels(*scans, own, options.mixed_pixels, options.silhouette_cells, &mixed);
     }
     EDGEFIT_RETURN_IF_ERROR(
         MarkAttachedPoints(*scans, *m.model, m.q, m.T_world_base, options.attached, &marks));

@@ -6,24 +6,16 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <unistd.h>
 
+#include "edgefit/core/atomic_file.h"
 #include "edgefit/model/primitive_meshes.h"
 
 namespace edgefit {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 class WorldReportTest : public ::testing::Test {
  protected:
@@ -70,7 +62,8 @@ class WorldReportTest : public ::testing::Test {
 
 TEST_F(WorldReportTest, ThePageHoldsEveryPartAndWaypoint) {
   ASSERT_TRUE(WriteWorldReport(report_, Path("w.html")).ok());
-  const std::string page = Slurp(Path("w.html"));
+  std::string page;
+  ASSERT_TRUE(ReadFileToString(Path("w.html"), &page).ok());
   EXPECT_NE(page.find("<title>a &lt;robot&gt; &amp; its floor</title>"), std::string::npos);
   EXPECT_NE(page.find("\"name\":\"robot_link_2\""), std::string::npos);
   EXPECT_NE(page.find("\"kind\":\"background\""), std::string::npos);

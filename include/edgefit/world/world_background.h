@@ -41,8 +41,7 @@ struct WorldBackgroundOptions {
 struct WorldBackgroundSummary {
   size_t machine_points = 0;           // the machines' and their attached points
   std::vector<size_t> riding;          // per machine: its attached points
-  size_t mixed_pixels = 0;             // all of them, those at the silhouettes included
-  size_t silhouette_mixed_pixels = 0;  // found at the machines' silhouettes only
+  size_t mixed_pixels = 0;  // those at the machines' silhouettes included
   size_t floating_voxels = 0, floating_points = 0;
 };
 
