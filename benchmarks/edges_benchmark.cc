@@ -11,11 +11,10 @@
 #include <glog/logging.h>
 #include <omp.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
-#include <nanoflann.hpp>
 
 #include "bundled_robot_scan.h"
+#include "kdtree_normals.h"
 #include "edgefit/edges/edge_detector.h"
 #include "edgefit/edges/edge_score.h"
 #include "edgefit/edges/grid_normals.h"
@@ -165,16 +164,6 @@ BENCHMARK(BM_WholeFit)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->It
 
 // Reference: the same radius with a 3D kd-tree instead of the lattice window
 // (nanoflann tree per scan, radius search, one unweighted PCA per point).
-struct ScanAdaptor {
-  const std::vector<Eigen::Vector3f>* points;
-  size_t kdtree_get_point_count() const { return points->size(); }
-  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
-};
-using ScanTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<float, ScanAdaptor>, ScanAdaptor, 3, uint32_t>;
-
 void BM_KdTreeNormalsReference(benchmark::State& state) {
   Fixture& f = GetFixture();
   ThreadScope threads(static_cast<int>(state.range(0)));
@@ -185,36 +174,8 @@ void BM_KdTreeNormalsReference(benchmark::State& state) {
       if (f.scans.scans[s].IsValid(i)) points[s].push_back(f.scans.scans[s].point_scanner(i));
     }
   }
-  std::vector<Eigen::Vector3f> normals;
   for (auto _ : state) {
-    for (const auto& cloud : points) {
-      ScanAdaptor adaptor{&cloud};
-      ScanTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-      tree.buildIndex();
-      normals.assign(cloud.size(), Eigen::Vector3f::Zero());
-#pragma omp parallel
-      {
-        std::vector<std::pair<uint32_t, float>> matches;
-        const nanoflann::SearchParams params(32, 0.0f, false);
-#pragma omp for schedule(dynamic, 1024)
-        for (int64_t i = 0; i < static_cast<int64_t>(cloud.size()); ++i) {
-          matches.clear();
-          tree.radiusSearch(cloud[i].data(), radius * radius, matches, params);
-          if (matches.size() < 3) continue;
-          Eigen::Vector3f mean = Eigen::Vector3f::Zero();
-          for (const auto& m : matches) mean += cloud[m.first] - cloud[i];
-          mean /= static_cast<float>(matches.size());
-          Eigen::Matrix3f cov = Eigen::Matrix3f::Zero();
-          for (const auto& m : matches) {
-            const Eigen::Vector3f d = cloud[m.first] - cloud[i] - mean;
-            cov.noalias() += d * d.transpose();
-          }
-          Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-          solver.computeDirect(cov.cast<double>(), Eigen::ComputeEigenvectors);
-          normals[static_cast<size_t>(i)] = solver.eigenvectors().col(0).cast<float>();
-        }
-      }
-    }
+    for (const auto& cloud : points) benchmark::DoNotOptimize(bench::KdTreeNormals(cloud, radius));
   }
   SetPointCounters(state, f);
 }

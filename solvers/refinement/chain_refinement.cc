@@ -308,6 +308,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, const Cell
   CorrespondenceOptions gated = icp.correspondence;
   const double final_gate = std::min(icp.final_gate, icp.correspondence.max_distance);
   summary->stop_reason = options.refine ? IcpStopReason::kMaxIterations : IcpStopReason::kConverged;
+  std::vector<std::vector<Pose>> final_gate_estimates;  // a cycle's test, as WeightedIcp's
   for (int iteration = 0; options.refine && iteration < icp.max_iterations; ++iteration) {
     const std::vector<Pose> T_world_link = model.ForwardKinematics(q_full, T_base);
     SelectAndPose(link_samples, T_world_link, visibility, icp.visibility,
@@ -333,13 +334,19 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, const Cell
     summary->final_cost = solve.final_cost;
     const Pose T_base_next = chain.kinematics.BasePose(chain.delta_base);
     const std::vector<double> q_next = chain.kinematics.FullJoints(chain.q_independent.data());
-    const double displacement =
-        MaxDisplacement(boxes_link, T_world_link, model.ForwardKinematics(q_next, T_base_next));
+    const std::vector<Pose> T_world_link_next = model.ForwardKinematics(q_next, T_base_next);
+    const double displacement = MaxDisplacement(boxes_link, T_world_link, T_world_link_next);
     T_base = T_base_next;
     q_full = q_next;
     const bool at_final_gate = gated.max_distance <= final_gate;
     gated.max_distance = std::max(final_gate, 0.5 * gated.max_distance);
-    if (at_final_gate && displacement <= icp.convergence_displacement) {
+    bool cycled = false;
+    for (const std::vector<Pose>& T : final_gate_estimates) {
+      cycled = cycled ||
+               MaxDisplacement(boxes_link, T, T_world_link_next) <= icp.convergence_displacement;
+    }
+    if (at_final_gate) final_gate_estimates.push_back(T_world_link_next);
+    if (at_final_gate && (displacement <= icp.convergence_displacement || cycled)) {
       summary->stop_reason = IcpStopReason::kConverged;
       break;
     }

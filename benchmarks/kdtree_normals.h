@@ -1,0 +1,66 @@
+// The reference every speed figure of a fit is measured against: a plain
+// kd-tree normal pass, what a point-cloud library computes before any
+// registration starts. One nanoflann tree per scan over its valid points,
+// a radius search and an unweighted PCA per point (the smallest
+// eigenvector), in parallel over the points.
+#ifndef EDGEFIT_BENCHMARKS_KDTREE_NORMALS_H_
+#define EDGEFIT_BENCHMARKS_KDTREE_NORMALS_H_
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <cstdint>
+#include <nanoflann.hpp>
+#include <utility>
+#include <vector>
+
+namespace edgefit {
+namespace bench {
+
+struct CloudAdaptor {
+  const std::vector<Eigen::Vector3f>* points;
+  size_t kdtree_get_point_count() const { return points->size(); }
+  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const { return false; }
+};
+using CloudTree = nanoflann::KDTreeSingleIndexAdaptor<
+    nanoflann::L2_Simple_Adaptor<float, CloudAdaptor>, CloudAdaptor, 3, uint32_t>;
+
+// Normals of `cloud` from its neighbours within `radius` [m] (zero where
+// fewer than 3); the tree is built inside, as a library user's call does.
+inline std::vector<Eigen::Vector3f> KdTreeNormals(const std::vector<Eigen::Vector3f>& cloud,
+                                                  float radius) {
+  CloudAdaptor adaptor{&cloud};
+  CloudTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  std::vector<Eigen::Vector3f> normals(cloud.size(), Eigen::Vector3f::Zero());
+#pragma omp parallel
+  {
+    std::vector<std::pair<uint32_t, float>> matches;
+    const nanoflann::SearchParams params(32, 0.0f, false);
+#pragma omp for schedule(dynamic, 1024)
+    for (int64_t i = 0; i < static_cast<int64_t>(cloud.size()); ++i) {
+      matches.clear();
+      tree.radiusSearch(cloud[static_cast<size_t>(i)].data(), radius * radius, matches, params);
+      if (matches.size() < 3) continue;
+      const Eigen::Vector3f& p = cloud[static_cast<size_t>(i)];
+      Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+      for (const auto& m : matches) mean += cloud[m.first] - p;
+      mean /= static_cast<float>(matches.size());
+      Eigen::Matrix3f cov = Eigen::Matrix3f::Zero();
+      for (const auto& m : matches) {
+        const Eigen::Vector3f d = cloud[m.first] - p - mean;
+        cov.noalias() += d * d.transpose();
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+      solver.computeDirect(cov.cast<double>(), Eigen::ComputeEigenvectors);
+      normals[static_cast<size_t>(i)] = solver.eigenvectors().col(0).cast<float>();
+    }
+  }
+  return normals;
+}
+
+}  // namespace bench
+}  // namespace edgefit
+
+#endif  // EDGEFIT_BENCHMARKS_KDTREE_NORMALS_H_
