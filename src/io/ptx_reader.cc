@@ -2,10 +2,11 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "edgefit/core/atomic_file.h"
+#include "edgefit/core/mapped_file.h"
 #include "edgefit/io/ptx.h"
 #include "edgefit/io/ptx_layout.h"
 #include "read_common.h"
@@ -192,7 +193,7 @@ Status ParsePoints(const std::string& name, int scan_number, LineCursor* cursor,
 }  // namespace
 
 Status ParsePtx(std::string_view content, const std::string& name, const ReadOptions& options,
-                ScanSet* scans) {
+                ScanSet* scans, const std::function<void(const char*)>& parsed_up_to) {
   ScanSet parsed;
   LineCursor cursor(content.data(), content.data() + content.size());
   while (true) {
@@ -224,6 +225,7 @@ Status ParsePtx(std::string_view content, const std::string& name, const ReadOpt
     OrganizedScan in_file_order(second, first);
     in_file_order.set_T_world_scanner(T_world_scanner);
     EDGEFIT_RETURN_IF_ERROR(ParsePoints(name, scan_number, &cursor, &in_file_order));
+    if (parsed_up_to) parsed_up_to(cursor.position());
     const PtxLayout layout = options.detect_ptx_layout
                                  ? DetectPtxLayout(in_file_order, first, second)
                                  : StandardPtxLayout(first, second);
@@ -244,9 +246,10 @@ Status ParsePtx(std::string_view content, const std::string& name, const ReadOpt
 }
 
 Status ReadPtx(const std::string& path, const ReadOptions& options, ScanSet* scans) {
-  std::string content;
-  EDGEFIT_RETURN_IF_ERROR(ReadFileToString(path, &content));
-  return ParsePtx(content, path, options, scans);
+  MappedFile file;
+  EDGEFIT_RETURN_IF_ERROR(file.Open(path));
+  return ParsePtx(file.view(), path, options, scans,
+                  [&file](const char* upto) { file.Release(upto); });
 }
 
 }  // namespace edgefit

@@ -54,6 +54,7 @@ ScanSet CropToRays(const ScanSet& scans, const std::vector<Eigen::Vector3d>& cen
       cos_half_angle.push_back(static_cast<float>(std::cos(std::asin(radius / distance))));
     }
     if (keep_all) continue;
+    scan.Detach();  // the copy's own cells before threads write them
     const int64_t n = static_cast<int64_t>(scan.size());
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < n; ++i) {
@@ -74,6 +75,7 @@ ScanSet CropToRays(const ScanSet& scans, const std::vector<Eigen::Vector3d>& cen
 ScanSet CropToBox(const ScanSet& scans, const Eigen::AlignedBox3d& box_world) {
   ScanSet cropped = scans;
   for (OrganizedScan& scan : cropped.scans) {
+    scan.Detach();  // the copy's own cells before threads write them
     const int64_t n = static_cast<int64_t>(scan.size());
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < n; ++i) {

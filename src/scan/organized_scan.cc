@@ -11,23 +11,29 @@ OrganizedScan::OrganizedScan(int rows, int cols) : rows_(rows), cols_(cols) {
   CHECK_GE(cols, 0);
   const size_t n = static_cast<size_t>(rows) * static_cast<size_t>(cols);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  points_.assign(n, Eigen::Vector3f(nan, nan, nan));
-  intensity_.assign(n, 0.0f);
+  cells_->points.assign(n, Eigen::Vector3f(nan, nan, nan));
+  cells_->intensity.assign(n, 0.0f);
+}
+
+void OrganizedScan::Detach() {
+  if (cells_.use_count() > 1) cells_ = std::make_shared<Cells>(*cells_);
 }
 
 void OrganizedScan::SetMissing(size_t i) {
+  Detach();
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  points_[i] = Eigen::Vector3f(nan, nan, nan);
-  intensity_[i] = 0.0f;
+  cells_->points[i] = Eigen::Vector3f(nan, nan, nan);
+  cells_->intensity[i] = 0.0f;
 }
 
 void OrganizedScan::EnableColor() {
-  if (colors_.empty()) colors_.assign(points_.size(), {0, 0, 0});
+  Detach();
+  if (cells_->colors.empty()) cells_->colors.assign(cells_->points.size(), {0, 0, 0});
 }
 
 void OrganizedScan::SetColor(size_t i, const std::array<uint8_t, 3>& rgb) {
   EnableColor();
-  colors_[i] = rgb;
+  cells_->colors[i] = rgb;
 }
 
 size_t OrganizedScan::FileIndex(size_t i) const {
@@ -38,16 +44,17 @@ size_t OrganizedScan::FileIndex(size_t i) const {
 
 size_t OrganizedScan::CountValid() const {
   size_t n = 0;
-  for (size_t i = 0; i < points_.size(); ++i) n += IsValid(i) ? 1 : 0;
+  for (size_t i = 0; i < size(); ++i) n += IsValid(i) ? 1 : 0;
   return n;
 }
 
 double OrganizedScan::BytesPerCell() const {
-  if (points_.empty()) return 0.0;
-  const size_t bytes = points_.capacity() * sizeof(Eigen::Vector3f) +
-                       intensity_.capacity() * sizeof(float) +
-                       colors_.capacity() * sizeof(std::array<uint8_t, 3>);
-  return static_cast<double>(bytes) / static_cast<double>(points_.size());
+  const Cells& c = *cells_;
+  if (c.points.empty()) return 0.0;
+  const size_t bytes = c.points.capacity() * sizeof(Eigen::Vector3f) +
+                       c.intensity.capacity() * sizeof(float) +
+                       c.colors.capacity() * sizeof(std::array<uint8_t, 3>);
+  return static_cast<double>(bytes) / static_cast<double>(c.points.size());
 }
 
 size_t ScanSet::TotalCells() const {

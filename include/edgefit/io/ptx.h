@@ -10,10 +10,11 @@
 //
 // The grid layout (which size is which, which index runs fastest) is detected
 // from the data (ptx_layout.h). Parsing is a hand-written line scanner over
-// the whole file in memory with fast_float, OpenMP-parallel over line blocks.
+// the mapped file with fast_float, OpenMP-parallel over line blocks.
 #ifndef EDGEFIT_IO_PTX_H_
 #define EDGEFIT_IO_PTX_H_
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -24,10 +25,12 @@
 namespace edgefit {
 
 // Parses PTX text; `name` (the file) prefixes messages and fills `sources`.
-// Appends the scans to `scans` only on success.
+// Appends the scans to `scans` only on success. `parsed` (optional) is
+// told, after each scan's points, where the text still to be read begins.
 Status ParsePtx(std::string_view content, const std::string& name, const ReadOptions& options,
-                ScanSet* scans);
-// Reads a PTX file (whole file in memory, then ParsePtx).
+                ScanSet* scans, const std::function<void(const char*)>& parsed = nullptr);
+// Reads a PTX file: mapped (core/mapped_file.h), each scan's text let go
+// once its points are parsed, so that the peak holds one scan's text.
 Status ReadPtx(const std::string& path, const ReadOptions& options, ScanSet* scans);
 
 // Writes organized scans as PTX, atomically. Cells go in each scan's file

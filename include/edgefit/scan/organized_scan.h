@@ -8,6 +8,13 @@
 // 19 bytes at most, under the 40 bytes per cell budget (io_test checks a
 // loaded scan with BytesPerCell). A missing cell (no return) has NaN
 // coordinates.
+//
+// Copies share their cells until one of them writes a cell (SetPoint,
+// SetMissing, SetColor, EnableColor: that copy then takes cells of its own),
+// so a copy that only moves its station (set_T_world_scanner, lattice)
+// costs no cells. Writing distinct cells from several threads is safe on a
+// scan whose cells are its own: a scan made by the constructor, or one
+// after Detach().
 #ifndef EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 #define EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 
@@ -16,6 +23,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,7 +47,7 @@ class OrganizedScan {
 
   int rows() const { return rows_; }
   int cols() const { return cols_; }
-  size_t size() const { return points_.size(); }
+  size_t size() const { return cells_->points.size(); }
   size_t Index(int row, int col) const {
     return static_cast<size_t>(col) * static_cast<size_t>(rows_) + static_cast<size_t>(row);
   }
@@ -51,25 +59,29 @@ class OrganizedScan {
   bool organized() const { return organized_; }
   void set_organized(bool organized) { organized_ = organized; }
 
-  bool IsValid(size_t i) const { return !std::isnan(points_[i].x()); }
+  bool IsValid(size_t i) const { return !std::isnan(cells_->points[i].x()); }
   // Point in the scanner frame [m]; NaN for a missing cell.
-  const Eigen::Vector3f& point_scanner(size_t i) const { return points_[i]; }
+  const Eigen::Vector3f& point_scanner(size_t i) const { return cells_->points[i]; }
   Eigen::Vector3d PointWorld(size_t i) const {
-    return T_world_scanner_ * points_[i].cast<double>();
+    return T_world_scanner_ * cells_->points[i].cast<double>();
   }
-  float intensity(size_t i) const { return intensity_[i]; }
-  bool has_color() const { return !colors_.empty(); }
+  float intensity(size_t i) const { return cells_->intensity[i]; }
+  bool has_color() const { return !cells_->colors.empty(); }
   // RGB of cell i; only when has_color().
-  const std::array<uint8_t, 3>& color(size_t i) const { return colors_[i]; }
+  const std::array<uint8_t, 3>& color(size_t i) const { return cells_->colors[i]; }
 
   void SetPoint(size_t i, const Eigen::Vector3f& p_scanner, float intensity) {
-    points_[i] = p_scanner;
-    intensity_[i] = intensity;
+    Detach();
+    cells_->points[i] = p_scanner;
+    cells_->intensity[i] = intensity;
   }
   void SetMissing(size_t i);
   void SetColor(size_t i, const std::array<uint8_t, 3>& rgb);  // allocates colors on first use
   // Allocates the colours (black) up front, so threads may SetColor distinct cells.
   void EnableColor();
+  // Takes cells of its own when they are shared with a copy (before
+  // threads write distinct cells of a copied scan).
+  void Detach();
 
   const Pose& T_world_scanner() const { return T_world_scanner_; }
   void set_T_world_scanner(const Pose& T) { T_world_scanner_ = T; }
@@ -91,9 +103,12 @@ class OrganizedScan {
   int rows_ = 0;
   int cols_ = 0;
   bool organized_ = true;
-  std::vector<Eigen::Vector3f> points_;
-  std::vector<float> intensity_;
-  std::vector<std::array<uint8_t, 3>> colors_;
+  struct Cells {
+    std::vector<Eigen::Vector3f> points;
+    std::vector<float> intensity;
+    std::vector<std::array<uint8_t, 3>> colors;
+  };
+  std::shared_ptr<Cells> cells_ = std::make_shared<Cells>();
   Pose T_world_scanner_ = Pose::Identity();
   FileOrder file_order_ = FileOrder::kColumnMajor;
   ScanLattice lattice_;
