@@ -9,29 +9,20 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <cstdint>
-#include <nanoflann.hpp>
 #include <utility>
 #include <vector>
 
+#include "edgefit/core/point_kdtree.h"
+
 namespace edgefit {
 namespace bench {
-
-struct CloudAdaptor {
-  const std::vector<Eigen::Vector3f>* points;
-  size_t kdtree_get_point_count() const { return points->size(); }
-  float kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
-};
-using CloudTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<float, CloudAdaptor>, CloudAdaptor, 3, uint32_t>;
 
 // Normals of `cloud` from its neighbours within `radius` [m] (zero where
 // fewer than 3); the tree is built inside, as a library user's call does.
 inline std::vector<Eigen::Vector3f> KdTreeNormals(const std::vector<Eigen::Vector3f>& cloud,
                                                   float radius) {
-  CloudAdaptor adaptor{&cloud};
-  CloudTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  PointVectorAdaptor adaptor{&cloud};
+  PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   tree.buildIndex();
   std::vector<Eigen::Vector3f> normals(cloud.size(), Eigen::Vector3f::Zero());
 #pragma omp parallel

@@ -6,5 +6,5 @@ edgefit_set_warnings(edgefit_test_synthetic)
 
 edgefit_add_test(scan_test
   SOURCES scan/scan_lattice_test.cc scan/projective_lattice_test.cc scan/lattice_estimation_test.cc
-          scan/scan_noise_test.cc scan/silhouette_mixed_pixels_test.cc
+          scan/scan_noise_test.cc scan/silhouette_mixed_pixels_test.cc scan/organized_scan_test.cc
   LIBS edgefit::scan edgefit_test_synthetic)
