@@ -5,6 +5,7 @@
 // (points on its surface left in the background) carved away. The world's
 // truth measures at their thresholds.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,11 @@ constexpr double kVoxel = 0.02;
 class ClearanceTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "edgefit_clearance_test";
+    // One folder per test and process: ctest runs this fixture's tests in
+    // parallel, and one's TearDown must not remove another's world.
+    dir_ = fs::temp_directory_path() /
+           ("edgefit_clearance_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     ASSERT_TRUE(LoadKinematicModel(std::string(EDGEFIT_SOURCE_DIR) + "/assets/robot/robot.urdf",
                                    ModelLoadOptions(), &model_)
@@ -89,7 +94,8 @@ TEST_F(ClearanceTest, WallAtAKnownDistance) {
       points.push_back((T[l] * v).cast<float>());
     }
   }
-  ASSERT_TRUE(WriteWorld(points).ok());
+  const Status written = WriteWorld(points);
+  ASSERT_TRUE(written.ok()) << written.message();
 
   ClearanceWorld world;
   ASSERT_TRUE(world.Load((dir_ / "world").string(), "robot", 1.0).ok());
@@ -160,7 +166,8 @@ TEST_F(ClearanceTest, TruthMeasuresAtTheirThresholds) {
   for (double y = -3.0; y <= 3.0; y += 0.01) {
     for (double z = 0.0; z <= 3.0; z += 0.01) points.emplace_back(wall, y, z);
   }
-  ASSERT_TRUE(WriteWorld(points).ok());
+  const Status written = WriteWorld(points);
+  ASSERT_TRUE(written.ok()) << written.message();
   // The robot's highest and lowest surface points.
   const std::vector<Pose> T = model_.ForwardKinematics(q_);
   Eigen::Vector3d top(0, 0, -1e9), bottom(0, 0, 1e9);

@@ -6,6 +6,7 @@
 // background's voxels: a closed surface around every point, and the same
 // cells occupied in the OctoMap tree.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <octomap/OcTree.h>
 #include <tinyxml2.h>
 
@@ -31,7 +32,11 @@ namespace fs = std::filesystem;
 class PlanningWorldTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "edgefit_planning_world_test";
+    // One folder per test and process: ctest runs this fixture's tests in
+    // parallel, and one's TearDown must not remove another's world.
+    dir_ = fs::temp_directory_path() /
+           ("edgefit_planning_world_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     AttachSpec gun;
