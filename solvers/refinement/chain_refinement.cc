@@ -308,7 +308,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, const Cell
   CorrespondenceOptions gated = icp.correspondence;
   const double final_gate = std::min(icp.final_gate, icp.correspondence.max_distance);
   summary->stop_reason = options.refine ? IcpStopReason::kMaxIterations : IcpStopReason::kConverged;
-  std::vector<std::vector<Pose>> final_gate_estimates;  // a cycle's test, as WeightedIcp's
+  std::vector<std::vector<Pose>> final_gate_estimates;  // a cycle's test
   for (int iteration = 0; options.refine && iteration < icp.max_iterations; ++iteration) {
     const std::vector<Pose> T_world_link = model.ForwardKinematics(q_full, T_base);
     SelectAndPose(link_samples, T_world_link, visibility, icp.visibility,
@@ -340,6 +340,11 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, const Cell
     q_full = q_next;
     const bool at_final_gate = gated.max_distance <= final_gate;
     gated.max_distance = std::max(final_gate, 0.5 * gated.max_distance);
+    // Converged when nothing moved, or when the estimate came back to within
+    // convergence_displacement of an earlier one at the final gate: the
+    // correspondences flip between two sets, and the iterations would repeat
+    // the cycle (on the demo's realistic scan, two estimates 0.02 mm apart
+    // for 52 of 60 iterations).
     bool cycled = false;
     for (const std::vector<Pose>& T : final_gate_estimates) {
       cycled = cycled ||

@@ -23,6 +23,11 @@
 // by its tip; seen from one side, the tip's cone turns a sideways
 // displacement into one along the slide).
 //
+// The iterations stop when no sample moved more than the ICP's
+// convergence_displacement, or when the estimate came back to within that
+// of an earlier one at the final gate (a cycle of flipping correspondences);
+// the stop reason is kConverged for both.
+//
 // Deterministic: the correspondence search is, Ceres runs single-threaded.
 #ifndef EDGEFIT_SOLVERS_REFINEMENT_CHAIN_REFINEMENT_H_
 #define EDGEFIT_SOLVERS_REFINEMENT_CHAIN_REFINEMENT_H_

@@ -196,7 +196,6 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
   CorrespondenceOptions gated = options.correspondence;
   const double final_gate = std::min(options.final_gate, options.correspondence.max_distance);
   summary->stop_reason = IcpStopReason::kMaxIterations;
-  std::vector<Pose> final_gate_estimates;  // a cycle's test
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     SelectAndPose(samples, T_world_link, options.visibility, gated.max_distance, 0.0);
     search_->Find(q_world_, crop_world, gated, &correspondences_);
@@ -215,15 +214,7 @@ Status WeightedIcp::Fit(const SurfaceSamples& samples, const LinkMotion& motion,
     T_world_link = T_next;
     const bool at_final_gate = gated.max_distance <= final_gate;
     gated.max_distance = std::max(final_gate, 0.5 * gated.max_distance);
-    // Converged when nothing moved, or when the estimate came back to an
-    // earlier one: the correspondences flip between two sets and the
-    // iterations would repeat that cycle.
-    bool cycled = false;
-    for (const Pose& T : final_gate_estimates) {
-      cycled = cycled || MaxDisplacement(corners_link, T, T_next) <= options.convergence_displacement;
-    }
-    if (at_final_gate) final_gate_estimates.push_back(T_next);
-    if (at_final_gate && (displacement <= options.convergence_displacement || cycled)) {
+    if (at_final_gate && displacement <= options.convergence_displacement) {
       summary->stop_reason = IcpStopReason::kConverged;
       break;
     }

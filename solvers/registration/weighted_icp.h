@@ -10,10 +10,7 @@
 //      chosen loss (in joint space under the trivial loss all of them in
 //      one block, costs/joint_batch_cost.h), plus, for a link on a joint,
 //      the kinematic constraint;
-//   4. stop when no sample moved more than convergence_displacement, or
-//      when the estimate came back to within that of an earlier one at the
-//      final gate (the correspondences flipping between two sets: the
-//      iterations would repeat the cycle).
+//   4. stop when no sample moved more than convergence_displacement.
 //
 // How the residuals are formed (loss, the constraint of a link on its
 // joint) is the engine's, given once when it is made (residual_options.h);
@@ -120,7 +117,7 @@ struct WeightedIcpOptions {
 };
 
 enum class IcpStopReason {
-  kConverged,              // displacement below convergence_displacement, or a cycle
+  kConverged,              // displacement below convergence_displacement
   kMaxIterations,          // max_iterations reached
   kTooFewCorrespondences,  // fewer than min_correspondences matches
   kSolverFailed,           // Ceres returned no usable solution
