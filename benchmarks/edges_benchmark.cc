@@ -168,12 +168,8 @@ void BM_KdTreeNormalsReference(benchmark::State& state) {
   Fixture& f = GetFixture();
   ThreadScope threads(static_cast<int>(state.range(0)));
   const float radius = static_cast<float>(f.options.normal_radius);
-  std::vector<std::vector<Eigen::Vector3f>> points(f.scans.scans.size());
-  for (size_t s = 0; s < points.size(); ++s) {
-    for (size_t i = 0; i < f.scans.scans[s].size(); ++i) {
-      if (f.scans.scans[s].IsValid(i)) points[s].push_back(f.scans.scans[s].point_scanner(i));
-    }
-  }
+  std::vector<std::vector<Eigen::Vector3f>> points;
+  for (const OrganizedScan& scan : f.scans.scans) points.push_back(bench::ValidPoints(scan));
   for (auto _ : state) {
     for (const auto& cloud : points) benchmark::DoNotOptimize(bench::KdTreeNormals(cloud, radius));
   }

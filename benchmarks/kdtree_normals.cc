@@ -48,11 +48,7 @@ int main(int argc, char** argv) {
   const auto loaded = std::chrono::steady_clock::now();
   size_t points = 0, with_normal = 0;
   for (const edgefit::OrganizedScan& scan : scans.scans) {
-    std::vector<Eigen::Vector3f> cloud;
-    cloud.reserve(scan.size());
-    for (size_t i = 0; i < scan.size(); ++i) {
-      if (scan.IsValid(i)) cloud.push_back(scan.point_scanner(i));
-    }
+    const std::vector<Eigen::Vector3f> cloud = edgefit::bench::ValidPoints(scan);
     const std::vector<Eigen::Vector3f> normals =
         edgefit::bench::KdTreeNormals(cloud, static_cast<float>(1e-3 * FLAGS_radius_mm));
     points += cloud.size();

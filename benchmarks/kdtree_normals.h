@@ -13,9 +13,21 @@
 #include <vector>
 
 #include "edgefit/core/point_kdtree.h"
+#include "edgefit/scan/organized_scan.h"
 
 namespace edgefit {
 namespace bench {
+
+// The valid points of `scan`, in its scanner frame: the cloud a library
+// user would hand to a normal pass.
+inline std::vector<Eigen::Vector3f> ValidPoints(const OrganizedScan& scan) {
+  std::vector<Eigen::Vector3f> cloud;
+  cloud.reserve(scan.size());
+  for (size_t i = 0; i < scan.size(); ++i) {
+    if (scan.IsValid(i)) cloud.push_back(scan.point_scanner(i));
+  }
+  return cloud;
+}
 
 // Normals of `cloud` from its neighbours within `radius` [m] (zero where
 // fewer than 3); the tree is built inside, as a library user's call does.
