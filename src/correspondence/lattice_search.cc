@@ -59,17 +59,24 @@ Correspondence LatticeSearch::NearestIn(int only_scan, const Eigen::Vector3f& q_
         if (!wrap) continue;
         c = ((c % cols) + cols) % cols;  // column cols-1 neighbours column 0
       }
-      const size_t base = static_cast<size_t>(c) * static_cast<size_t>(rows);
-      for (int r = r0; r <= r1; ++r) {
-        const size_t cell = base + static_cast<size_t>(r);
-        if (missing != nullptr && missing[cell] != 0) continue;
-        // A missing cell is NaN, so d2 is NaN and both tests are false.
-        const float d2 = (scan.point_scanner(cell) - qf).squaredNorm();
-        if (d2 < best_d2 || (d2 == best_d2 && static_cast<int>(s) == best_scan &&
-                             static_cast<int>(cell) < best_cell)) {
-          best_d2 = d2;
-          best_scan = static_cast<int>(s);
-          best_cell = static_cast<int>(cell);
+      // Rows r0..r1 of column c: contiguous cells, in runs that end with
+      // the scan's chunks.
+      size_t cell = static_cast<size_t>(c) * static_cast<size_t>(rows) + static_cast<size_t>(r0);
+      const size_t end = cell + static_cast<size_t>(r1 - r0 + 1);
+      while (cell < end) {
+        size_t run;
+        const Eigen::Vector3f* p = scan.PointRun(cell, &run);
+        run = std::min(run, end - cell);
+        for (size_t k = 0; k < run; ++k, ++cell) {
+          if (missing != nullptr && missing[cell] != 0) continue;
+          // A missing cell is NaN, so d2 is NaN and both tests are false.
+          const float d2 = (p[k] - qf).squaredNorm();
+          if (d2 < best_d2 || (d2 == best_d2 && static_cast<int>(s) == best_scan &&
+                               static_cast<int>(cell) < best_cell)) {
+            best_d2 = d2;
+            best_scan = static_cast<int>(s);
+            best_cell = static_cast<int>(cell);
+          }
         }
       }
     }

@@ -2,6 +2,8 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
+#include <iterator>
 #include <limits>
 
 namespace edgefit {
@@ -9,31 +11,44 @@ namespace edgefit {
 OrganizedScan::OrganizedScan(int rows, int cols) : rows_(rows), cols_(cols) {
   CHECK_GE(rows, 0);
   CHECK_GE(cols, 0);
-  const size_t n = static_cast<size_t>(rows) * static_cast<size_t>(cols);
+  size_ = static_cast<size_t>(rows) * static_cast<size_t>(cols);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  cells_->points.assign(n, Eigen::Vector3f(nan, nan, nan));
-  cells_->intensity.assign(n, 0.0f);
+  chunks_.resize((size_ + kChunkMask) >> kChunkBits);
+  for (auto& chunk : chunks_) {
+    chunk = std::make_shared<Chunk>();
+    std::fill(std::begin(chunk->points), std::end(chunk->points), Eigen::Vector3f(nan, nan, nan));
+    std::fill(std::begin(chunk->intensity), std::end(chunk->intensity), 0.0f);
+  }
+}
+
+OrganizedScan::Chunk& OrganizedScan::OwnChunk(size_t c) {
+  if (chunks_[c].use_count() > 1) chunks_[c] = std::make_shared<Chunk>(*chunks_[c]);
+  return *chunks_[c];
 }
 
 void OrganizedScan::Detach() {
-  if (cells_.use_count() > 1) cells_ = std::make_shared<Cells>(*cells_);
+  for (size_t c = 0; c < chunks_.size(); ++c) OwnChunk(c);
+  if (colors_ != nullptr && colors_.use_count() > 1) {
+    colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(*colors_);
+  }
 }
 
 void OrganizedScan::SetMissing(size_t i) {
-  Detach();
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  cells_->points[i] = Eigen::Vector3f(nan, nan, nan);
-  cells_->intensity[i] = 0.0f;
+  SetPoint(i, Eigen::Vector3f(nan, nan, nan), 0.0f);
 }
 
 void OrganizedScan::EnableColor() {
-  Detach();
-  if (cells_->colors.empty()) cells_->colors.assign(cells_->points.size(), {0, 0, 0});
+  if (colors_ == nullptr) {
+    colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(size_, std::array<uint8_t, 3>{0, 0, 0});
+  } else if (colors_.use_count() > 1) {
+    colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(*colors_);
+  }
 }
 
 void OrganizedScan::SetColor(size_t i, const std::array<uint8_t, 3>& rgb) {
   EnableColor();
-  cells_->colors[i] = rgb;
+  (*colors_)[i] = rgb;
 }
 
 size_t OrganizedScan::FileIndex(size_t i) const {
@@ -49,14 +64,11 @@ size_t OrganizedScan::CountValid() const {
 }
 
 double OrganizedScan::BytesPerCell() const {
-  const Cells& c = *cells_;
-  if (c.points.empty()) return 0.0;
-  const size_t bytes = c.points.capacity() * sizeof(Eigen::Vector3f) +
-                       c.intensity.capacity() * sizeof(float) +
-                       c.colors.capacity() * sizeof(std::array<uint8_t, 3>);
-  return static_cast<double>(bytes) / static_cast<double>(c.points.size());
+  if (size_ == 0) return 0.0;
+  const size_t bytes = chunks_.size() * (sizeof(Chunk) + sizeof(chunks_[0])) +
+                       (colors_ != nullptr ? colors_->capacity() * sizeof((*colors_)[0]) : 0);
+  return static_cast<double>(bytes) / static_cast<double>(size_);
 }
-
 size_t ScanSet::TotalCells() const {
   size_t n = 0;
   for (const auto& s : scans) n += s.size();

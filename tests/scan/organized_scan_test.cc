@@ -40,6 +40,26 @@ TEST(OrganizedScanTest, CopiesShareCellsUntilOneWrites) {
   EXPECT_FALSE(original.has_color());
 }
 
+// A copy that sets a cell missing takes only that cell's chunk as its own:
+// the coverings left out of a scan cost their chunks, not the scan.
+TEST(OrganizedScanTest, AWriteCopiesOnlyItsChunk) {
+  const size_t rows = OrganizedScan::kChunkCells / 2;
+  OrganizedScan original(static_cast<int>(rows), 8);  // four chunks
+  for (size_t i = 0; i < original.size(); ++i) {
+    original.SetPoint(i, Eigen::Vector3f(1.0f, 0.0f, static_cast<float>(i)), 0.25f);
+  }
+  OrganizedScan cut = original;
+  const size_t last = original.size() - 1;
+  cut.SetMissing(last);
+  EXPECT_FALSE(cut.IsValid(last));
+  EXPECT_TRUE(original.IsValid(last));
+  EXPECT_EQ(&cut.point_scanner(0), &original.point_scanner(0));
+  EXPECT_NE(&cut.point_scanner(last - 1), &original.point_scanner(last - 1));
+  EXPECT_EQ(cut.point_scanner(last - 1), original.point_scanner(last - 1));
+  EXPECT_EQ(cut.intensity(last - 1), 0.25f);
+  EXPECT_EQ(cut.CountValid(), original.size() - 1);
+}
+
 // After Detach, threads may write distinct cells of a copy.
 TEST(OrganizedScanTest, ADetachedCopyIsWrittenByThreads) {
   const OrganizedScan original = TwentyCellScan();

@@ -9,12 +9,14 @@
 // loaded scan with BytesPerCell). A missing cell (no return) has NaN
 // coordinates.
 //
-// Copies share their cells until one of them writes a cell (SetPoint,
-// SetMissing, SetColor, EnableColor: that copy then takes cells of its own),
-// so a copy that only moves its station (set_T_world_scanner, lattice)
-// costs no cells. Writing distinct cells from several threads is safe on a
-// scan whose cells are its own: a scan made by the constructor, or one
-// after Detach().
+// Cells are held in chunks of kChunkCells. Copies share their chunks until
+// one of them writes a cell (SetPoint, SetMissing: that copy then takes the
+// chunk of that cell as its own; SetColor, EnableColor: all the colours), so
+// a copy that only moves its station (set_T_world_scanner, lattice) costs no
+// cells, and one with a few cells set missing (the coverings left out)
+// costs only their chunks. Writing distinct cells from several threads is
+// safe on a scan whose cells are its own: a scan made by the constructor,
+// or one after Detach().
 #ifndef EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 #define EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 
@@ -47,7 +49,7 @@ class OrganizedScan {
 
   int rows() const { return rows_; }
   int cols() const { return cols_; }
-  size_t size() const { return cells_->points.size(); }
+  size_t size() const { return size_; }
   size_t Index(int row, int col) const {
     return static_cast<size_t>(col) * static_cast<size_t>(rows_) + static_cast<size_t>(row);
   }
@@ -59,29 +61,42 @@ class OrganizedScan {
   bool organized() const { return organized_; }
   void set_organized(bool organized) { organized_ = organized; }
 
-  bool IsValid(size_t i) const { return !std::isnan(cells_->points[i].x()); }
+  bool IsValid(size_t i) const { return !std::isnan(point_scanner(i).x()); }
   // Point in the scanner frame [m]; NaN for a missing cell.
-  const Eigen::Vector3f& point_scanner(size_t i) const { return cells_->points[i]; }
-  Eigen::Vector3d PointWorld(size_t i) const {
-    return T_world_scanner_ * cells_->points[i].cast<double>();
+  const Eigen::Vector3f& point_scanner(size_t i) const {
+    return chunks_[i >> kChunkBits]->points[i & kChunkMask];
   }
-  float intensity(size_t i) const { return cells_->intensity[i]; }
-  bool has_color() const { return !cells_->colors.empty(); }
+  // Points of cells i, i + 1, ... to the end of i's chunk, contiguous:
+  // *count of them (at least 1), for loops along a column.
+  const Eigen::Vector3f* PointRun(size_t i, size_t* count) const {
+    *count = kChunkCells - (i & kChunkMask);
+    return &point_scanner(i);
+  }
+  Eigen::Vector3d PointWorld(size_t i) const {
+    return T_world_scanner_ * point_scanner(i).cast<double>();
+  }
+  float intensity(size_t i) const { return chunks_[i >> kChunkBits]->intensity[i & kChunkMask]; }
+  bool has_color() const { return colors_ != nullptr; }
   // RGB of cell i; only when has_color().
-  const std::array<uint8_t, 3>& color(size_t i) const { return cells_->colors[i]; }
+  const std::array<uint8_t, 3>& color(size_t i) const { return (*colors_)[i]; }
 
   void SetPoint(size_t i, const Eigen::Vector3f& p_scanner, float intensity) {
-    Detach();
-    cells_->points[i] = p_scanner;
-    cells_->intensity[i] = intensity;
+    Chunk& chunk = OwnChunk(i >> kChunkBits);
+    chunk.points[i & kChunkMask] = p_scanner;
+    chunk.intensity[i & kChunkMask] = intensity;
   }
   void SetMissing(size_t i);
   void SetColor(size_t i, const std::array<uint8_t, 3>& rgb);  // allocates colors on first use
   // Allocates the colours (black) up front, so threads may SetColor distinct cells.
   void EnableColor();
-  // Takes cells of its own when they are shared with a copy (before
+  // Takes cells of its own where they are shared with a copy (before
   // threads write distinct cells of a copied scan).
   void Detach();
+
+  // 4,096 cells (64 KiB) per chunk: a few columns of a laser scan.
+  static constexpr int kChunkBits = 12;
+  static constexpr size_t kChunkCells = size_t{1} << kChunkBits;
+  static constexpr size_t kChunkMask = kChunkCells - 1;
 
   const Pose& T_world_scanner() const { return T_world_scanner_; }
   void set_T_world_scanner(const Pose& T) { T_world_scanner_ = T; }
@@ -103,12 +118,16 @@ class OrganizedScan {
   int rows_ = 0;
   int cols_ = 0;
   bool organized_ = true;
-  struct Cells {
-    std::vector<Eigen::Vector3f> points;
-    std::vector<float> intensity;
-    std::vector<std::array<uint8_t, 3>> colors;
+  struct Chunk {
+    Eigen::Vector3f points[kChunkCells];
+    float intensity[kChunkCells];
   };
-  std::shared_ptr<Cells> cells_ = std::make_shared<Cells>();
+  // Chunk c, made this scan's own (copied if a copy shares it).
+  Chunk& OwnChunk(size_t c);
+
+  size_t size_ = 0;
+  std::vector<std::shared_ptr<Chunk>> chunks_;
+  std::shared_ptr<std::vector<std::array<uint8_t, 3>>> colors_;  // null: no colour
   Pose T_world_scanner_ = Pose::Identity();
   FileOrder file_order_ = FileOrder::kColumnMajor;
   ScanLattice lattice_;
