@@ -114,7 +114,7 @@ int RunCell(const Command& command) {
     models.push_back(std::move(m));
   }
   ScanSet scans;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, &scans));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, !FLAGS_out_background.empty(), &scans));
   std::vector<CellTruthAsset> truth;
   if (!FLAGS_truth.empty())
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));

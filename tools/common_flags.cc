@@ -89,8 +89,9 @@ Status ReadOptionsFromFlags(ReadOptions* options) {
   return Status::Ok();
 }
 
-Status ReadScanList(const std::string& list, ScanSet* scans) {
+Status ReadScanList(const std::string& list, bool intensity, ScanSet* scans) {
   ReadOptions options;
+  options.intensity = intensity;
   EDGEFIT_RETURN_IF_ERROR(ReadOptionsFromFlags(&options));
   for (const std::string& path : SplitList(list)) {
     EDGEFIT_RETURN_IF_ERROR(ReadScans(path, options, scans));

@@ -42,8 +42,9 @@ namespace tools {
 // The scan readers' options: --camera_info (read here), --depth_scale.
 Status ReadOptionsFromFlags(ReadOptions* options);
 // Every file of the comma list `list` (--scan) read with
-// ReadOptionsFromFlags, appended to *scans.
-Status ReadScanList(const std::string& list, ScanSet* scans);
+// ReadOptionsFromFlags, appended to *scans; `intensity`: keep the points'
+// intensities (ReadOptions::intensity: a fit needs them only to write scans).
+Status ReadScanList(const std::string& list, bool intensity, ScanSet* scans);
 // Applies `sensor` (ApplySensorPreset), then --beam (when the sensor has a
 // footprint) and --jackets.
 Status SensorOptionsFromFlags(const std::string& sensor, AssetScanOptions* options);

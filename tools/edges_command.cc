@@ -108,7 +108,7 @@ int RunEdges(const Command& command) {
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   const auto start = std::chrono::steady_clock::now();
   ScanSet set;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, &set));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, true, &set));
   LabelFile labels;
   if (!FLAGS_labels.empty()) {
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadLabels(FLAGS_labels, &labels));

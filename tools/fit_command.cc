@@ -144,7 +144,7 @@ int RunFit(const Command& command) {
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, FitOptionsFromFlags(kind, &options));
   EDGEFIT_RETURN_IF_ERROR_EXIT(command, KnownJointsFromFlags(model, &options.known_joints));
   ScanSet scans;
-  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, &scans));
+  EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadScanList(FLAGS_scan, !FLAGS_out_background.empty(), &scans));
   std::vector<CellTruthAsset> truth;  // one asset, or a cell's (edgefit scan --scene)
   if (!FLAGS_truth.empty())
     EDGEFIT_RETURN_IF_ERROR_EXIT(command, ReadCellTruthJson(FLAGS_truth, &truth));

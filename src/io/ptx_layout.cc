@@ -92,6 +92,7 @@ OrganizedScan ApplyPtxLayout(OrganizedScan in_file_order, const PtxLayout& layou
   OrganizedScan scan(layout.rows, layout.cols);
   scan.set_T_world_scanner(in_file_order.T_world_scanner());
   scan.set_file_order(layout.order);
+  if (!in_file_order.has_intensity()) scan.DropIntensity();
   if (in_file_order.has_color()) scan.EnableColor();
   for (size_t i = 0; i < scan.size(); ++i) {
     const size_t f = scan.FileIndex(i);

@@ -223,6 +223,7 @@ Status ParsePtx(std::string_view content, const std::string& name, const ReadOpt
     }
     // Cells in file order first (cell index == line index); layout after.
     OrganizedScan in_file_order(second, first);
+    if (!options.intensity) in_file_order.DropIntensity();  // before the points: never held
     in_file_order.set_T_world_scanner(T_world_scanner);
     EDGEFIT_RETURN_IF_ERROR(ParsePoints(name, scan_number, &cursor, &in_file_order));
     if (parsed_up_to) parsed_up_to(cursor.position());

@@ -213,7 +213,7 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
 
   // Extensions: the stations registered to the fitted model, then the whole
   // chain at once on them, and its covariance.
-  const CellMask mixed = RefinementMissingCells(work, options, say, result);
+  CellMask mixed = RefinementMissingCells(work, options, say, result);
   if (align_stations) {
     CorrespondenceSearch search(&own, weights);
     EDGEFIT_RETURN_IF_ERROR(
@@ -230,7 +230,8 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
     say(std::string("chain: ") +
         (stations_moved ? "the stations moved" : "coverings hide much of a link") +
         ": fitting the chain again on the aligned stations without the coverings");
-    EDGEFIT_RETURN_IF_ERROR(RefitWithoutCoverings(model, work, covered, final_tools, base,
+    mixed = CellMask();  // the second pass finds its own (a byte per cell)
+    EDGEFIT_RETURN_IF_ERROR(RefitWithoutCoverings(model, work, std::move(covered), final_tools, base,
                                                   base_samples, cad, weights, normals,
                                                   covered_link, options, say, result));
   } else {

@@ -7,7 +7,7 @@
 namespace edgefit {
 
 Status RefitWithoutCoverings(const KinematicModel& model, const ScanSet& scans,
-                             const CellMask& covered, const ScanTools& first_pass,
+                             CellMask covered, const ScanTools& first_pass,
                              const Body& base, const SurfaceSamples& base_samples,
                              const CadSamples& cad, const CellWeights* weights,
                              const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner,
@@ -19,6 +19,7 @@ Status RefitWithoutCoverings(const KinematicModel& model, const ScanSet& scans,
       if (covered[s][i]) clean_scans.scans[s].SetMissing(i);
     }
   }
+  covered = CellMask();  // a byte per cell: not held beside this pass's own masks
   ScanTools clean(&clean_scans, weights, normals_scanner, options.residuals);
   ChainFitter chain(model, options.chain, options.samples, cad.icp, cad.sweep, &clean.icp,
                     &clean.sweep, say);

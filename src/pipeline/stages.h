@@ -105,12 +105,12 @@ Status FitChainFromRoughPoses(const KinematicModel& model, const Body& base,
 // Extension: the sequential fit chose every joint's basin on stations that
 // did not agree, or with coverings hiding much of a link: the chain again
 // from result->T_world_base on `scans` (the aligned stations) without the
-// `covered` cells, then the refinement, the final basins and the verdict
-// there. `first_pass`: the tools on `scans` with the coverings, whose
-// sweep tells what the coverings hide. result->coverings keeps the first
-// pass's.
+// `covered` cells (taken: freed once they are left out), then the
+// refinement, the final basins and the verdict there. `first_pass`: the
+// tools on `scans` with the coverings, whose sweep tells what the coverings
+// hide. result->coverings keeps the first pass's.
 Status RefitWithoutCoverings(const KinematicModel& model, const ScanSet& scans,
-                             const CellMask& covered, const ScanTools& first_pass,
+                             CellMask covered, const ScanTools& first_pass,
                              const Body& base, const SurfaceSamples& base_samples,
                              const CadSamples& cad, const CellWeights* weights,
                              const std::vector<std::vector<Eigen::Vector3f>>* normals_scanner,

@@ -2,8 +2,6 @@
 
 #include <glog/logging.h>
 
-#include <algorithm>
-#include <iterator>
 #include <limits>
 
 namespace edgefit {
@@ -16,9 +14,9 @@ OrganizedScan::OrganizedScan(int rows, int cols) : rows_(rows), cols_(cols) {
   chunks_.resize((size_ + kChunkMask) >> kChunkBits);
   for (auto& chunk : chunks_) {
     chunk = std::make_shared<Chunk>();
-    std::fill(std::begin(chunk->points), std::end(chunk->points), Eigen::Vector3f(nan, nan, nan));
-    std::fill(std::begin(chunk->intensity), std::end(chunk->intensity), 0.0f);
+    chunk->fill(Eigen::Vector3f(nan, nan, nan));
   }
+  intensity_->assign(size_, 0.0f);
 }
 
 OrganizedScan::Chunk& OrganizedScan::OwnChunk(size_t c) {
@@ -26,8 +24,14 @@ OrganizedScan::Chunk& OrganizedScan::OwnChunk(size_t c) {
   return *chunks_[c];
 }
 
+std::vector<float>& OrganizedScan::OwnIntensity() {
+  if (intensity_.use_count() > 1) intensity_ = std::make_shared<std::vector<float>>(*intensity_);
+  return *intensity_;
+}
+
 void OrganizedScan::Detach() {
   for (size_t c = 0; c < chunks_.size(); ++c) OwnChunk(c);
+  if (intensity_ != nullptr) OwnIntensity();
   if (colors_ != nullptr && colors_.use_count() > 1) {
     colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(*colors_);
   }
@@ -35,7 +39,7 @@ void OrganizedScan::Detach() {
 
 void OrganizedScan::SetMissing(size_t i) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  SetPoint(i, Eigen::Vector3f(nan, nan, nan), 0.0f);
+  OwnChunk(i >> kChunkBits)[i & kChunkMask] = Eigen::Vector3f(nan, nan, nan);
 }
 
 void OrganizedScan::EnableColor() {
@@ -66,6 +70,7 @@ size_t OrganizedScan::CountValid() const {
 double OrganizedScan::BytesPerCell() const {
   if (size_ == 0) return 0.0;
   const size_t bytes = chunks_.size() * (sizeof(Chunk) + sizeof(chunks_[0])) +
+                       (intensity_ != nullptr ? intensity_->capacity() * sizeof(float) : 0) +
                        (colors_ != nullptr ? colors_->capacity() * sizeof((*colors_)[0]) : 0);
   return static_cast<double>(bytes) / static_cast<double>(size_);
 }

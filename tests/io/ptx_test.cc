@@ -200,6 +200,34 @@ TEST(PtxTest, LoadedScanFitsMemoryBudget) {
   }
 }
 
+// ReadOptions::intensity = false (a fit's read): the same points, no
+// intensities held.
+TEST(PtxTest, ReadWithoutIntensityKeepsThePoints) {
+  ScanSet set;
+  set.scans.push_back(MakeSyntheticScan(testing::RoomScene(), testing::SmallScanOptions(3)));
+  const std::string path = TempPath("no_intensity.ptx");
+  ASSERT_TRUE(WritePtx(path, set).ok());
+  ScanSet with, without;
+  ReadOptions options;
+  ASSERT_TRUE(ReadScans(path, options, &with).ok());
+  options.intensity = false;
+  ASSERT_TRUE(ReadScans(path, options, &without).ok());
+  const OrganizedScan& a = with.scans[0];
+  const OrganizedScan& b = without.scans[0];
+  ASSERT_EQ(a.size(), b.size());
+  size_t lit = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a.IsValid(i), b.IsValid(i));
+    if (!a.IsValid(i)) continue;
+    EXPECT_EQ(a.point_scanner(i), b.point_scanner(i));
+    EXPECT_EQ(b.intensity(i), 0.0f);
+    lit += a.intensity(i) > 0.0f ? 1 : 0;
+  }
+  EXPECT_GT(lit, 0u);
+  EXPECT_LT(b.BytesPerCell(), a.BytesPerCell() - 3.0);
+  std::remove(path.c_str());
+}
+
 TEST(PtxTest, WritePtxRefusesUnorganizedScans) {
   ScanSet set;
   set.scans.emplace_back(1, 10);

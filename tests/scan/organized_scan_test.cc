@@ -60,6 +60,20 @@ TEST(OrganizedScanTest, AWriteCopiesOnlyItsChunk) {
   EXPECT_EQ(cut.CountValid(), original.size() - 1);
 }
 
+// DropIntensity frees the intensities; points are still written and read.
+TEST(OrganizedScanTest, ADroppedIntensityReadsZero) {
+  OrganizedScan scan = TwentyCellScan();
+  const double with = scan.BytesPerCell();
+  scan.DropIntensity();
+  EXPECT_EQ(scan.intensity(1), 0.0f);
+  scan.SetPoint(1, Eigen::Vector3f(2.0f, 0.0f, 0.0f), 0.75f);
+  EXPECT_EQ(scan.point_scanner(1), Eigen::Vector3f(2.0f, 0.0f, 0.0f));
+  EXPECT_EQ(scan.intensity(1), 0.0f);
+  EXPECT_LT(scan.BytesPerCell(), with);
+  scan.Detach();
+  EXPECT_EQ(scan.CountValid(), scan.size());
+}
+
 // After Detach, threads may write distinct cells of a copy.
 TEST(OrganizedScanTest, ADetachedCopyIsWrittenByThreads) {
   const OrganizedScan original = TwentyCellScan();

@@ -9,12 +9,12 @@
 // loaded scan with BytesPerCell). A missing cell (no return) has NaN
 // coordinates.
 //
-// Cells are held in chunks of kChunkCells. Copies share their chunks until
+// Points are held in chunks of kChunkCells. Copies share their chunks until
 // one of them writes a cell (SetPoint, SetMissing: that copy then takes the
-// chunk of that cell as its own; SetColor, EnableColor: all the colours), so
-// a copy that only moves its station (set_T_world_scanner, lattice) costs no
-// cells, and one with a few cells set missing (the coverings left out)
-// costs only their chunks. Writing distinct cells from several threads is
+// chunk of that cell as its own; SetPoint also all the intensities,
+// SetColor and EnableColor all the colours), so a copy that only moves its
+// station (set_T_world_scanner, lattice) costs no cells, and one with some
+// cells set missing (the coverings left out) costs only their chunks. Writing distinct cells from several threads is
 // safe on a scan whose cells are its own: a scan made by the constructor,
 // or one after Detach().
 #ifndef EDGEFIT_SCAN_ORGANIZED_SCAN_H_
@@ -64,7 +64,7 @@ class OrganizedScan {
   bool IsValid(size_t i) const { return !std::isnan(point_scanner(i).x()); }
   // Point in the scanner frame [m]; NaN for a missing cell.
   const Eigen::Vector3f& point_scanner(size_t i) const {
-    return chunks_[i >> kChunkBits]->points[i & kChunkMask];
+    return (*chunks_[i >> kChunkBits])[i & kChunkMask];
   }
   // Points of cells i, i + 1, ... to the end of i's chunk, contiguous:
   // *count of them (at least 1), for loops along a column.
@@ -75,16 +75,21 @@ class OrganizedScan {
   Eigen::Vector3d PointWorld(size_t i) const {
     return T_world_scanner_ * point_scanner(i).cast<double>();
   }
-  float intensity(size_t i) const { return chunks_[i >> kChunkBits]->intensity[i & kChunkMask]; }
+  // 0 for a missing cell, and after DropIntensity.
+  float intensity(size_t i) const {
+    return intensity_ != nullptr && IsValid(i) ? (*intensity_)[i] : 0.0f;
+  }
   bool has_color() const { return colors_ != nullptr; }
   // RGB of cell i; only when has_color().
   const std::array<uint8_t, 3>& color(size_t i) const { return (*colors_)[i]; }
 
   void SetPoint(size_t i, const Eigen::Vector3f& p_scanner, float intensity) {
-    Chunk& chunk = OwnChunk(i >> kChunkBits);
-    chunk.points[i & kChunkMask] = p_scanner;
-    chunk.intensity[i & kChunkMask] = intensity;
+    OwnChunk(i >> kChunkBits)[i & kChunkMask] = p_scanner;
+    if (intensity_ != nullptr) OwnIntensity()[i] = intensity;
   }
+  // Frees the intensities (a fit never reads them); SetPoint keeps none.
+  void DropIntensity() { intensity_.reset(); }
+  bool has_intensity() const { return intensity_ != nullptr; }
   void SetMissing(size_t i);
   void SetColor(size_t i, const std::array<uint8_t, 3>& rgb);  // allocates colors on first use
   // Allocates the colours (black) up front, so threads may SetColor distinct cells.
@@ -93,8 +98,8 @@ class OrganizedScan {
   // threads write distinct cells of a copied scan).
   void Detach();
 
-  // 4,096 cells (64 KiB) per chunk: a few columns of a laser scan.
-  static constexpr int kChunkBits = 12;
+  // 1,024 cells (12 KiB) per chunk: about half a laser scan's column.
+  static constexpr int kChunkBits = 10;
   static constexpr size_t kChunkCells = size_t{1} << kChunkBits;
   static constexpr size_t kChunkMask = kChunkCells - 1;
 
@@ -118,15 +123,15 @@ class OrganizedScan {
   int rows_ = 0;
   int cols_ = 0;
   bool organized_ = true;
-  struct Chunk {
-    Eigen::Vector3f points[kChunkCells];
-    float intensity[kChunkCells];
-  };
-  // Chunk c, made this scan's own (copied if a copy shares it).
+  using Chunk = std::array<Eigen::Vector3f, kChunkCells>;
+  // Chunk c and the intensities, made this scan's own (copied if a copy
+  // shares them).
   Chunk& OwnChunk(size_t c);
+  std::vector<float>& OwnIntensity();
 
   size_t size_ = 0;
   std::vector<std::shared_ptr<Chunk>> chunks_;
+  std::shared_ptr<std::vector<float>> intensity_ = std::make_shared<std::vector<float>>();
   std::shared_ptr<std::vector<std::array<uint8_t, 3>>> colors_;  // null: no colour
   Pose T_world_scanner_ = Pose::Identity();
   FileOrder file_order_ = FileOrder::kColumnMajor;
