@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   edgefit::ReadOptions read;
   read.estimate_lattice = false;
+  read.intensity = !FLAGS_out_ply.empty();  // the normal pass, as the fit, reads none
   edgefit::ScanSet scans;
   const edgefit::Status status = edgefit::ReadScans(FLAGS_scan, read, &scans);
   if (!status.ok()) {

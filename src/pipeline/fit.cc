@@ -231,8 +231,8 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
         (stations_moved ? "the stations moved" : "coverings hide much of a link") +
         ": fitting the chain again on the aligned stations without the coverings");
     mixed = CellMask();  // the second pass finds its own (a byte per cell)
-    EDGEFIT_RETURN_IF_ERROR(RefitWithoutCoverings(model, work, std::move(covered), final_tools, base,
-                                                  base_samples, cad, weights, normals,
+    EDGEFIT_RETURN_IF_ERROR(RefitWithoutCoverings(model, work, std::move(covered), final_tools,
+                                                  base, base_samples, cad, weights, normals,
                                                   covered_link, options, say, result));
   } else {
     // Every joint's basin at the final values, then the verdict of every

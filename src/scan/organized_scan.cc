@@ -44,7 +44,8 @@ void OrganizedScan::SetMissing(size_t i) {
 
 void OrganizedScan::EnableColor() {
   if (colors_ == nullptr) {
-    colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(size_, std::array<uint8_t, 3>{0, 0, 0});
+    colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(
+        size_, std::array<uint8_t, 3>{0, 0, 0});
   } else if (colors_.use_count() > 1) {
     colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(*colors_);
   }

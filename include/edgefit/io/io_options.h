@@ -11,8 +11,9 @@ struct ReadOptions {
   // Estimate each organized scan's ScanLattice after loading (a scan whose
   // lattice cannot be estimated, e.g. one without valid points, fails the read).
   bool estimate_lattice = true;
-  // Keep each point's intensity. A fit never reads it: false frees it after
-  // the read (4 bytes per cell), and intensity() is 0 from then on.
+  // Keep each point's intensity. A fit never reads it: false holds none
+  // (4 bytes per cell; PTX: never allocated, other formats: freed after
+  // the read), and intensity() is 0.
   bool intensity = true;
   LatticeOptions lattice;
   // A depth camera's intrinsics (a ROS camera_info file): a depth PNG needs

@@ -4,19 +4,19 @@
 // Cells are stored column by column, as PTX writes them:
 //   cell index = col * rows + row.
 // Points are kept in the scanner frame as float (12 bytes) with T_world_scanner
-// in double, so a cell costs 12 (xyz) + 4 (intensity) + 3 (optional RGB) bytes:
-// 19 bytes at most, under the 40 bytes per cell budget (io_test checks a
-// loaded scan with BytesPerCell). A missing cell (no return) has NaN
-// coordinates.
+// in double, so a cell costs 12 (xyz) + 4 (intensity, unless dropped: a fit
+// reads none) + 3 (optional RGB) bytes: 19 bytes at most, under the 40 bytes
+// per cell budget (io_test checks a loaded scan with BytesPerCell). A
+// missing cell (no return) has NaN coordinates.
 //
 // Points are held in chunks of kChunkCells. Copies share their chunks until
 // one of them writes a cell (SetPoint, SetMissing: that copy then takes the
 // chunk of that cell as its own; SetPoint also all the intensities,
 // SetColor and EnableColor all the colours), so a copy that only moves its
 // station (set_T_world_scanner, lattice) costs no cells, and one with some
-// cells set missing (the coverings left out) costs only their chunks. Writing distinct cells from several threads is
-// safe on a scan whose cells are its own: a scan made by the constructor,
-// or one after Detach().
+// cells set missing (the coverings left out) costs only their chunks.
+// Writing distinct cells from several threads is safe on a scan whose cells
+// are its own: a scan made by the constructor, or one after Detach().
 #ifndef EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 #define EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 
