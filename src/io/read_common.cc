@@ -20,6 +20,7 @@ Status FinishScan(const std::string& what, const ReadOptions& options, Organized
     EDGEFIT_RETURN_IF_ERROR(GridOnCamera(what, camera, *scan, &grid));
     *scan = std::move(grid);
   }
+  if (!options.intensity) scan->DropIntensity();
   if (options.estimate_lattice && scan->organized()) {
     if (!camera.empty()) {
       if (camera.width != scan->cols() || camera.height != scan->rows()) {

@@ -13,7 +13,8 @@ namespace io_internal {
 
 // Fails for a scan without valid points; estimates the lattice of an
 // organized scan when asked (a point list read with a camera's intrinsics
-// first put on its pixel grid: camera_grid.h). `what` names the scan, e.g.
+// first put on its pixel grid: camera_grid.h); drops the intensities
+// unless ReadOptions::intensity. `what` names the scan, e.g.
 // "f.ptx: scan 2".
 Status FinishScan(const std::string& what, const ReadOptions& options, OrganizedScan* scan);
 

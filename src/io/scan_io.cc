@@ -35,9 +35,7 @@ Status Unknown(const std::string& path) {
 
 }  // namespace
 
-namespace {
-
-Status ReadByFormat(const std::string& path, const ReadOptions& options, ScanSet* scans) {
+Status ReadScans(const std::string& path, const ReadOptions& options, ScanSet* scans) {
   switch (FormatOf(path)) {
     case Format::kPtx: return ReadPtx(path, options, scans);
     case Format::kPcd: return ReadPcd(path, options, scans);
@@ -47,17 +45,6 @@ Status ReadByFormat(const std::string& path, const ReadOptions& options, ScanSet
     case Format::kUnknown: break;
   }
   return Unknown(path);
-}
-
-}  // namespace
-
-Status ReadScans(const std::string& path, const ReadOptions& options, ScanSet* scans) {
-  const size_t first = scans->scans.size();
-  EDGEFIT_RETURN_IF_ERROR(ReadByFormat(path, options, scans));
-  if (!options.intensity) {
-    for (size_t s = first; s < scans->scans.size(); ++s) scans->scans[s].DropIntensity();
-  }
-  return Status::Ok();
 }
 
 Status WriteScans(const std::string& path, const ScanSet& scans, const WriteOptions& options) {

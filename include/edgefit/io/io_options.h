@@ -12,8 +12,8 @@ struct ReadOptions {
   // lattice cannot be estimated, e.g. one without valid points, fails the read).
   bool estimate_lattice = true;
   // Keep each point's intensity. A fit never reads it: false holds none
-  // (4 bytes per cell; PTX: never allocated, other formats: freed after
-  // the read), and intensity() is 0.
+  // (4 bytes per cell; PTX: never allocated, other formats: freed as each
+  // scan is finished), and intensity() is 0.
   bool intensity = true;
   LatticeOptions lattice;
   // A depth camera's intrinsics (a ROS camera_info file): a depth PNG needs
