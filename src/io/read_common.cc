@@ -21,6 +21,7 @@ Status FinishScan(const std::string& what, const ReadOptions& options, Organized
     *scan = std::move(grid);
   }
   if (!options.intensity) scan->DropIntensity();
+  scan->ShareEmptyChunks();
   if (options.estimate_lattice && scan->organized()) {
     if (!camera.empty()) {
       if (camera.width != scan->cols() || camera.height != scan->rows()) {

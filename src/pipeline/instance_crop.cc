@@ -54,20 +54,13 @@ ScanSet CropToRays(const ScanSet& scans, const std::vector<Eigen::Vector3d>& cen
       cos_half_angle.push_back(static_cast<float>(std::cos(std::asin(radius / distance))));
     }
     if (keep_all) continue;
-    scan.Detach();  // the copy's own cells before threads write them
-    const int64_t n = static_cast<int64_t>(scan.size());
-#pragma omp parallel for schedule(static)
-    for (int64_t i = 0; i < n; ++i) {
-      const size_t cell = static_cast<size_t>(i);
-      if (!scan.IsValid(cell)) continue;
-      const Eigen::Vector3f& p = scan.point_scanner(cell);
+    scan.SetMissingWhere([&](const Eigen::Vector3f& p) {
       const float length = p.norm();
-      bool inside = false;
-      for (size_t k = 0; k < directions.size() && !inside; ++k) {
-        inside = p.dot(directions[k]) >= length * cos_half_angle[k];
+      for (size_t k = 0; k < directions.size(); ++k) {
+        if (p.dot(directions[k]) >= length * cos_half_angle[k]) return false;
       }
-      if (!inside) scan.SetMissing(cell);
-    }
+      return true;
+    });
   }
   return cropped;
 }
@@ -75,13 +68,10 @@ ScanSet CropToRays(const ScanSet& scans, const std::vector<Eigen::Vector3d>& cen
 ScanSet CropToBox(const ScanSet& scans, const Eigen::AlignedBox3d& box_world) {
   ScanSet cropped = scans;
   for (OrganizedScan& scan : cropped.scans) {
-    scan.Detach();  // the copy's own cells before threads write them
-    const int64_t n = static_cast<int64_t>(scan.size());
-#pragma omp parallel for schedule(static)
-    for (int64_t i = 0; i < n; ++i) {
-      const size_t cell = static_cast<size_t>(i);
-      if (scan.IsValid(cell) && !box_world.contains(scan.PointWorld(cell))) scan.SetMissing(cell);
-    }
+    const Pose& T_world_scanner = scan.T_world_scanner();
+    scan.SetMissingWhere([&](const Eigen::Vector3f& p) {
+      return !box_world.contains(T_world_scanner * p.cast<double>());
+    });
   }
   return cropped;
 }

@@ -2,6 +2,9 @@
 
 #include <glog/logging.h>
 
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace edgefit {
@@ -29,15 +32,54 @@ std::vector<float>& OrganizedScan::OwnIntensity() {
   return *intensity_;
 }
 
-void OrganizedScan::Detach() {
-  for (size_t c = 0; c < chunks_.size(); ++c) OwnChunk(c);
-  if (intensity_ != nullptr) OwnIntensity();
-  if (colors_ != nullptr && colors_.use_count() > 1) {
-    colors_ = std::make_shared<std::vector<std::array<uint8_t, 3>>>(*colors_);
+const std::shared_ptr<OrganizedScan::Chunk>& OrganizedScan::EmptyChunk() {
+  static const std::shared_ptr<Chunk> empty = [] {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    auto chunk = std::make_shared<Chunk>();
+    chunk->fill(Eigen::Vector3f(nan, nan, nan));
+    return chunk;
+  }();
+  return empty;
+}
+
+void OrganizedScan::ShareEmptyChunks() {
+  for (std::shared_ptr<Chunk>& chunk : chunks_) {
+    if (chunk == EmptyChunk()) continue;
+    bool empty = true;
+    for (size_t k = 0; k < kChunkCells && empty; ++k) empty = std::isnan((*chunk)[k].x());
+    if (empty) chunk = EmptyChunk();
+  }
+}
+
+void OrganizedScan::SetMissingWhere(const std::function<bool(const Eigen::Vector3f&)>& drop) {
+  const int64_t chunks = static_cast<int64_t>(chunks_.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int64_t c = 0; c < chunks; ++c) {
+    const size_t chunk = static_cast<size_t>(c);
+    if (chunks_[chunk] == EmptyChunk()) continue;
+    std::array<bool, kChunkCells> dropped;
+    size_t valid = 0, n_dropped = 0;
+    for (size_t k = 0; k < kChunkCells; ++k) {
+      const Eigen::Vector3f& p = (*chunks_[chunk])[k];
+      dropped[k] = !std::isnan(p.x()) && drop(p);
+      valid += std::isnan(p.x()) ? 0 : 1;
+      n_dropped += dropped[k] ? 1 : 0;
+    }
+    if (n_dropped == 0) continue;
+    if (n_dropped == valid) {
+      chunks_[chunk] = EmptyChunk();
+      continue;
+    }
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    Chunk& own = OwnChunk(chunk);
+    for (size_t k = 0; k < kChunkCells; ++k) {
+      if (dropped[k]) own[k] = Eigen::Vector3f(nan, nan, nan);
+    }
   }
 }
 
 void OrganizedScan::SetMissing(size_t i) {
+  if (chunks_[i >> kChunkBits] == EmptyChunk()) return;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   OwnChunk(i >> kChunkBits)[i & kChunkMask] = Eigen::Vector3f(nan, nan, nan);
 }
@@ -70,7 +112,9 @@ size_t OrganizedScan::CountValid() const {
 
 double OrganizedScan::BytesPerCell() const {
   if (size_ == 0) return 0.0;
-  const size_t bytes = chunks_.size() * (sizeof(Chunk) + sizeof(chunks_[0])) +
+  size_t own = 0;
+  for (const std::shared_ptr<Chunk>& chunk : chunks_) own += chunk != EmptyChunk() ? 1 : 0;
+  const size_t bytes = own * sizeof(Chunk) + chunks_.size() * sizeof(chunks_[0]) +
                        (intensity_ != nullptr ? intensity_->capacity() * sizeof(float) : 0) +
                        (colors_ != nullptr ? colors_->capacity() * sizeof((*colors_)[0]) : 0);
   return static_cast<double>(bytes) / static_cast<double>(size_);

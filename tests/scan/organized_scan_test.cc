@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <thread>
-
 #include "edgefit/core/pose.h"
 
 namespace edgefit {
@@ -60,6 +58,31 @@ TEST(OrganizedScanTest, AWriteCopiesOnlyItsChunk) {
   EXPECT_EQ(cut.CountValid(), original.size() - 1);
 }
 
+// Chunks with no valid cell are let go for the shared empty one: they read
+// missing, cost no cells, and a write there takes a chunk of its own again
+// (the other scans' empty chunks stay empty).
+TEST(OrganizedScanTest, EmptyChunksAreShared) {
+  const size_t rows = OrganizedScan::kChunkCells;
+  OrganizedScan scan(static_cast<int>(rows), 4);  // four chunks, the second one valid
+  scan.DropIntensity();
+  for (size_t i = rows; i < 2 * rows; ++i) scan.SetPoint(i, Eigen::Vector3f(1.0f, 2.0f, 3.0f), 0.0f);
+  const double before = scan.BytesPerCell();
+  scan.ShareEmptyChunks();
+  EXPECT_LT(scan.BytesPerCell(), 0.3 * before);
+  EXPECT_EQ(scan.CountValid(), rows);
+  EXPECT_EQ(scan.point_scanner(rows), Eigen::Vector3f(1.0f, 2.0f, 3.0f));
+  EXPECT_FALSE(scan.IsValid(0));
+  EXPECT_FALSE(scan.IsValid(4 * rows - 1));
+  OrganizedScan other = scan;
+  scan.SetMissing(0);  // already missing: stays shared
+  EXPECT_LT(scan.BytesPerCell(), 0.3 * before);
+  scan.SetPoint(5, Eigen::Vector3f(4.0f, 5.0f, 6.0f), 0.0f);
+  EXPECT_EQ(scan.point_scanner(5), Eigen::Vector3f(4.0f, 5.0f, 6.0f));
+  EXPECT_FALSE(other.IsValid(5));
+  EXPECT_FALSE(scan.IsValid(4));
+  EXPECT_EQ(scan.CountValid(), rows + 1);
+}
+
 // DropIntensity frees the intensities; points are still written and read.
 TEST(OrganizedScanTest, ADroppedIntensityReadsZero) {
   OrganizedScan scan = TwentyCellScan();
@@ -70,23 +93,30 @@ TEST(OrganizedScanTest, ADroppedIntensityReadsZero) {
   EXPECT_EQ(scan.point_scanner(1), Eigen::Vector3f(2.0f, 0.0f, 0.0f));
   EXPECT_EQ(scan.intensity(1), 0.0f);
   EXPECT_LT(scan.BytesPerCell(), with);
-  scan.Detach();
   EXPECT_EQ(scan.CountValid(), scan.size());
 }
 
-// After Detach, threads may write distinct cells of a copy.
-TEST(OrganizedScanTest, ADetachedCopyIsWrittenByThreads) {
-  const OrganizedScan original = TwentyCellScan();
-  OrganizedScan copy = original;
-  copy.Detach();
-  auto cut_every_fourth_from = [&copy](size_t first) {
-    for (size_t i = first; i < copy.size(); i += 4) copy.SetMissing(i);
-  };
-  std::thread a(cut_every_fourth_from, 0), b(cut_every_fourth_from, 2);
-  a.join();
-  b.join();
-  EXPECT_EQ(copy.CountValid(), original.size() / 2);
+// SetMissingWhere on a copy: a chunk with nothing dropped stays shared with
+// the original, one with everything dropped becomes the shared empty one,
+// only a chunk with some dropped is copied; the original keeps every cell.
+TEST(OrganizedScanTest, SetMissingWhereCopiesOnlyTheBoundary) {
+  const size_t rows = OrganizedScan::kChunkCells;
+  OrganizedScan original(static_cast<int>(rows), 3);  // three chunks
+  original.DropIntensity();
+  for (size_t i = 0; i < original.size(); ++i) {
+    original.SetPoint(i, Eigen::Vector3f(1.0f, 0.0f, static_cast<float>(i)), 0.0f);
+  }
+  OrganizedScan crop = original;
+  const float first_kept = static_cast<float>(rows + rows / 2);
+  crop.SetMissingWhere([&](const Eigen::Vector3f& p) { return p.z() < first_kept; });
+  EXPECT_EQ(crop.CountValid(), rows + rows / 2);
   EXPECT_EQ(original.CountValid(), original.size());
+  EXPECT_FALSE(crop.IsValid(rows + rows / 2 - 1));
+  EXPECT_TRUE(crop.IsValid(rows + rows / 2));
+  EXPECT_EQ(&crop.point_scanner(2 * rows), &original.point_scanner(2 * rows));  // shared
+  EXPECT_NE(&crop.point_scanner(rows), &original.point_scanner(rows));          // copied
+  // 2 chunks of 3 held (the empty one counts as nothing), 1 of them its own.
+  EXPECT_LT(crop.BytesPerCell(), 0.7 * original.BytesPerCell());
 }
 
 }  // namespace

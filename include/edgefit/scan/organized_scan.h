@@ -15,8 +15,13 @@
 // SetColor and EnableColor all the colours), so a copy that only moves its
 // station (set_T_world_scanner, lattice) costs no cells, and one with some
 // cells set missing (the coverings left out) costs only their chunks.
-// Writing distinct cells from several threads is safe on a scan whose cells
-// are its own: a scan made by the constructor, or one after Detach().
+// A chunk whose cells are all missing (sky, out of range, what a crop
+// leaves out) can be let go for one such chunk that every scan shares
+// (ShareEmptyChunks, which the readers call; SetMissingWhere): it costs a
+// pointer, and a cell written there takes a chunk of its own again.
+// Writing distinct cells from several threads is safe on a scan made by the
+// constructor (its cells are its own); SetMissingWhere writes a copy's in
+// parallel itself.
 #ifndef EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 #define EDGEFIT_SCAN_ORGANIZED_SCAN_H_
 
@@ -25,6 +30,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -94,9 +100,13 @@ class OrganizedScan {
   void SetColor(size_t i, const std::array<uint8_t, 3>& rgb);  // allocates colors on first use
   // Allocates the colours (black) up front, so threads may SetColor distinct cells.
   void EnableColor();
-  // Takes cells of its own where they are shared with a copy (before
-  // threads write distinct cells of a copied scan).
-  void Detach();
+  // Lets every chunk with no valid cell go for the shared empty one.
+  void ShareEmptyChunks();
+  // Sets missing every valid cell whose point p_scanner makes drop(p_scanner)
+  // true, chunk by chunk in parallel: a chunk with none dropped stays shared
+  // with copies, one with all dropped becomes the shared empty one, only the
+  // others are copied (a crop of a copy costs its boundary's chunks).
+  void SetMissingWhere(const std::function<bool(const Eigen::Vector3f&)>& drop);
 
   // 1,024 cells (12 KiB) per chunk: about half a laser scan's column.
   static constexpr int kChunkBits = 10;
@@ -116,7 +126,8 @@ class OrganizedScan {
   void set_lattice(ScanLattice lattice) { lattice_ = std::move(lattice); }
 
   size_t CountValid() const;
-  // Bytes held per grid cell (memory budget check).
+  // Bytes held per grid cell (memory budget check); the shared empty chunk
+  // counts as nothing.
   double BytesPerCell() const;
 
  private:
@@ -127,6 +138,8 @@ class OrganizedScan {
   // Chunk c and the intensities, made this scan's own (copied if a copy
   // shares them).
   Chunk& OwnChunk(size_t c);
+  // The all-missing chunk scans share (never written: OwnChunk copies it).
+  static const std::shared_ptr<Chunk>& EmptyChunk();
   std::vector<float>& OwnIntensity();
 
   size_t size_ = 0;
