@@ -78,7 +78,7 @@ Status FitCell(const std::vector<CellModel>& models, const CellOptions& options,
           " points");
       FitOptions fit_options = cell_model.options;
       fit_options.crop.enabled = true;
-      fit_options.min_base_inlier_share = 0.5 * fit_options.quality.min_inlier_share;
+      fit_options.min_base_inlier_share = fit_options.quality.min_inlier_share;
       fit_options.base.hypotheses.instance_separation = 0.5;  // [m]
       CellInstance instance;
       instance.model = static_cast<int>(m);

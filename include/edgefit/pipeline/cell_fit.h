@@ -8,8 +8,11 @@
 // the first model's edge options (and its mixed pixels removed first when
 // it asks so); every fit reads them (FitWithEdges), cropped to its
 // instance after its rough base poses (FitOptions::crop, turned on here),
-// and stops after the base where the base clearly does not match
-// (FitOptions::min_base_inlier_share, half the quality's inlier share here).
+// and stops after the base where the base cannot pass its verdict
+// (FitOptions::min_base_inlier_share, the quality's inlier share here: after
+// their precise ICP the right bases of the demo and the realistic cell had
+// 99.9-100 % of their visible samples within the gate, the places where a
+// search for one more instance fitted a whole chain for nothing 43-51 %).
 //
 // A fit is an instance when its base matches the scan and no body is a
 // mismatch (IsInstance): a part the stations did not see, or a joint the

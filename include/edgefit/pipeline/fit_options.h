@@ -201,8 +201,8 @@ struct FitOptions {
   // rough pose, has fewer than this share of its visible samples within the
   // quality's inlier distance, the fit stops there, not ok, without the
   // chain (no machine of this model there). 0 = off (edgefit fit: the whole
-  // fit and every body's verdict); the cell fit sets half the quality's
-  // min_inlier_share.
+  // fit and every body's verdict); the cell fit sets the quality's
+  // min_inlier_share (cell_fit.h).
   double min_base_inlier_share = 0.0;
   // Sec. 4: edges and their weights (w_high lives here).
   EdgeDetectionOptions edges;
