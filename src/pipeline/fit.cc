@@ -221,10 +221,12 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   }
   ScanTools final_tools(&work, weights, normals, options.residuals);
   CellMask covered;
-  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, work, mixed, &final_tools.search, weights, cad,
-                                           options, say, result, &covered));
   const bool stations_moved =
       LargestCorrection(result->stations) > options.stations.refit_correction;
+  FitOptions refine_options = options;  // the second pass has the covariance
+  refine_options.refinement.chain.covariance &= !stations_moved;
+  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, work, mixed, &final_tools.search, weights, cad,
+                                           refine_options, say, result, &covered));
   const bool covered_link = CoveringsHideALink(result->coverings, options.refinement.coverings);
   if (stations_moved || covered_link) {
     say(std::string("chain: ") +

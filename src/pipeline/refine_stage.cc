@@ -51,14 +51,20 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const
   CorrespondenceSearch unmixed_search(&scans, weights, nullptr, mixed);
   CorrespondenceSearch* refine_search = mixed != nullptr ? &unmixed_search : search;
   const std::vector<SurfaceSamples>& chain_samples = cad.chain;
-  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, refine_search, chain_samples, refinement,
-                                      options.residuals, &result->T_world_base, &result->q,
+  // The covariance (chain.covariance) of the last solve only: the result
+  // keeps no other.
+  const CoveringOptions& coverings = options.refinement.coverings;
+  const int rounds = refinement.refine ? coverings.rounds : 0;
+  ChainRefinementOptions settling = refinement;
+  settling.covariance = false;
+  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, refine_search, chain_samples,
+                                      rounds > 0 ? settling : refinement, options.residuals,
+                                      &result->T_world_base, &result->q,
                                       &result->chain_refinement));
 
   // Coverings (jackets, covers) found at the estimate and left out, then
   // the chain refined again without them.
-  const CoveringOptions& coverings = options.refinement.coverings;
-  for (int round = 0; refinement.refine && round < coverings.rounds; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     EDGEFIT_RETURN_IF_ERROR(FindCoverings(
         model, scans, search, chain_samples, result->T_world_base, result->q, coverings,
         refinement.icp.correspondence.use_lattice, covered, &result->coverings));
@@ -70,8 +76,9 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const
     say(line);
     CorrespondenceSearch masked_search(&scans, weights, covered, mixed);
     EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, &masked_search, chain_samples,
-                                        refinement, options.residuals, &result->T_world_base,
-                                        &result->q, &result->chain_refinement));
+                                        round + 1 < rounds ? settling : refinement,
+                                        options.residuals, &result->T_world_base, &result->q,
+                                        &result->chain_refinement));
   }
   result->timings.refine = Since(start);
   if (refinement.refine) {
