@@ -69,8 +69,11 @@ Eigen::MatrixXd SurfacePatches::Covariance(const ceres::CRSMatrix& jacobian,
           jacobian.values[static_cast<size_t>(k)] * normal.transpose();
     }
   }
-  const Eigen::MatrixXd spread = H_inverse * g;
-  return sigma_cad * sigma_cad * spread * spread.transpose();
+  // Coefficient by coefficient (lazyProduct): Eigen's blocked product splits
+  // its long inner sums by the number of OpenMP threads, and the deviations
+  // then differed in their last digit between thread counts.
+  const Eigen::MatrixXd spread = H_inverse.lazyProduct(g);
+  return sigma_cad * sigma_cad * spread.lazyProduct(spread.transpose());
 }
 
 }  // namespace edgefit

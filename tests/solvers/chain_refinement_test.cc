@@ -5,11 +5,13 @@
 // degrees) one problem over base and joints brings them back within the
 // scan's noise, and the covariance tells the one joint the scan does not
 // pin (the round flange's); the covariance alone leaves the estimate as it is;
-// incidence weights let returns at grazing incidence pull the joints less.
+// incidence weights let returns at grazing incidence pull the joints less;
+// the deviations do not depend on the thread count.
 #include "solvers/refinement/chain_refinement.h"
 
 #include <glog/logging.h>
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -351,6 +353,38 @@ TEST(ChainRefinementTest, TheCadDeviationIsNotAveragedAwayByMoreSamples) {
     EXPECT_LT(res_dense[i], 0.75 * res1[i]) << i;
     EXPECT_GT(std::sqrt(cad_dense[i]), 0.8 * std::sqrt(cad1[i])) << i;
     EXPECT_LT(std::sqrt(cad_dense[i]), 1.25 * std::sqrt(cad1[i])) << i;
+  }
+}
+
+// The deviations are the same to the last digit for any thread count: the
+// CAD's part sums over the surface patches, hundreds of them at 5 cm.
+TEST(ChainRefinementTest, TheDeviationsAreTheSameForAnyThreadCount) {
+  const RobotScene& s = GetRobotScene();
+  ChainRefinementOptions options = CovarianceOnly();
+  options.cad_deviation_patch = 0.05;
+  auto deviations = [&](int threads) {
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    Pose T_world_base = s.T_world_base;
+    std::vector<double> q = s.q;
+    ChainRefinementSummary summary;
+    EXPECT_TRUE(Refine(s.samples, options, &T_world_base, &q, &summary).ok());
+    omp_set_num_threads(before);
+    std::vector<double> all = summary.joint_std;
+    for (int i = 0; i < 3; ++i) {
+      all.push_back(summary.base_rotation_std[i]);
+      all.push_back(summary.base_translation_std[i]);
+    }
+    return all;
+  };
+  const std::vector<double> one = deviations(1), two = deviations(2);
+  ASSERT_EQ(one.size(), two.size());
+  for (size_t i = 0; i < one.size(); ++i) {
+    if (std::isnan(one[i])) {
+      EXPECT_TRUE(std::isnan(two[i])) << i;
+    } else {
+      EXPECT_EQ(one[i], two[i]) << i;
+    }
   }
 }
 
