@@ -113,16 +113,25 @@ size_t WeightedIcp::SelectAndPose(const SurfaceSamples& samples, const Pose& T_w
   p_used_link_.clear();
   n_used_link_.clear();
   q_world_.clear();
+  // The visibility test in parallel, the samples kept in their order: the
+  // same selection for any thread count.
+  const int64_t count = static_cast<int64_t>(samples.points.size());
+  views_.assign(samples.points.size(), ScanView::kSeen);
+  if (filter) {
+    const bool facing_only = visibility == WeightedIcpOptions::Visibility::kFacing;
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < count; ++i) {
+      const size_t k = static_cast<size_t>(i);
+      const Eigen::Vector3d q = R * samples.points[k].cast<double>() + t;
+      const Eigen::Vector3d n = R * samples.normals[k].cast<double>();
+      views_[k] = visibility_.BestView(q, n, gate, facing_only, max_view_gap);
+    }
+  }
   size_t occluded = 0;
   for (size_t i = 0; i < samples.points.size(); ++i) {
+    occluded += views_[i] == ScanView::kOccluded;
+    if (views_[i] != ScanView::kSeen) continue;
     const Eigen::Vector3d q = R * samples.points[i].cast<double>() + t;
-    if (filter) {
-      const Eigen::Vector3d n = R * samples.normals[i].cast<double>();
-      const bool facing_only = visibility == WeightedIcpOptions::Visibility::kFacing;
-      const ScanView view = visibility_.BestView(q, n, gate, facing_only, max_view_gap);
-      occluded += view == ScanView::kOccluded;
-      if (view != ScanView::kSeen) continue;
-    }
     p_used_link_.push_back(samples.points[i]);
     if (has_normals) n_used_link_.push_back(samples.normals[i]);
     q_world_.push_back(q.cast<float>());

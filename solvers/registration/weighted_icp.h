@@ -206,6 +206,7 @@ class WeightedIcp {
                const Eigen::AlignedBox3d& crop_world, WeightedIcpSummary* summary);
   ScanVisibility visibility_;
   // Buffers reused between iterations and fits.
+  std::vector<ScanView> views_;               // per sample, SelectAndPose's
   std::vector<Eigen::Vector3f> p_used_link_;  // the samples of the iteration
   std::vector<Eigen::Vector3f> n_used_link_;  // their normals, when the samples have them
   std::vector<Eigen::Vector3f> q_world_;      // the same, posed
