@@ -91,59 +91,6 @@ void SpreadVerdicts(const OrganizedScan& scan, const Window& area, const std::ve
   }
 }
 
-// One scan's verdicts: each matched cell is a covering when the median
-// offset of the matched cells within options.window of it, or its own, lies
-// outside the CAD surface by more than area_offset (point_offset); the cells
-// near it take its verdict (SpreadVerdicts). Into *covered (a byte per
-// cell of `scan`) and *summary (counts per link, slides.size() links).
-void JudgeScan(const OrganizedScan& scan, const std::vector<Match>& matches,
-               const std::vector<bool>& slides, const CoveringOptions& options,
-               std::vector<uint8_t>* covered, CoveringSummary* summary) {
-  summary->link_matched.assign(slides.size(), 0);
-  summary->link_covered.assign(slides.size(), 0);
-  covered->assign(scan.size(), 0);
-  const int w = scan.organized() ? options.window : 0;
-  const Window area = MatchedWindow(scan, matches, w);
-  // Per window cell: the signed distance of its closest sample, that
-  // distance, its link (the first of equally close ones).
-  std::vector<float> offset(area.size(), 0.0f);
-  std::vector<float> closest(area.size(), std::numeric_limits<float>::infinity());
-  std::vector<int> owner(area.size(), -1);
-  for (const Match& m : matches) {
-    const size_t local = area.Local(scan.RowOf(m.cell), scan.ColOf(m.cell));
-    if (!(m.distance < closest[local])) continue;
-    closest[local] = m.distance;
-    offset[local] = m.offset;
-    owner[local] = m.link;
-  }
-  std::vector<float> block;
-  const int r_end = area.r0 + area.rows - 1, c_end = area.c0 + area.cols - 1;
-  for (int c = area.c0; c <= c_end; ++c) {
-    for (int r = area.r0; r <= r_end; ++r) {
-      const size_t local = area.Local(r, c);
-      if (owner[local] < 0) continue;
-      block.clear();
-      for (int cc = std::max(area.c0, c - w); cc <= std::min(c_end, c + w); ++cc) {
-        for (int rr = std::max(area.r0, r - w); rr <= std::min(r_end, r + w); ++rr) {
-          const size_t other = area.Local(rr, cc);
-          if (owner[other] >= 0) block.push_back(offset[other]);
-        }
-      }
-      std::nth_element(block.begin(), block.begin() + block.size() / 2, block.end());
-      const size_t link = static_cast<size_t>(owner[local]);
-      const bool is_covering = !slides[link] && (block[block.size() / 2] > options.area_offset ||
-                                                 offset[local] > options.point_offset);
-      ++summary->matched;
-      ++summary->link_matched[link];
-      if (!is_covering) continue;
-      (*covered)[scan.Index(r, c)] = 1;
-      ++summary->covered;
-      ++summary->link_covered[link];
-    }
-  }
-  if (w > 0) SpreadVerdicts(scan, area, owner, w, options.gate, covered, summary);
-}
-
 }  // namespace
 
 bool CoveringOptions::IsValid(std::string* error) const {
@@ -238,26 +185,53 @@ Status FindCoverings(const KinematicModel& model, const ScanSet& scans,
     if (j.type == JointType::kPrismatic) slides[static_cast<size_t>(j.child_link)] = true;
   }
 
-  // The scans judged in parallel, each into its own counts: integer sums,
-  // the same for any thread count.
-  covered->assign(n_scans, {});
-  std::vector<CoveringSummary> scan_summaries(n_scans);
-#pragma omp parallel for schedule(dynamic, 1)
-  for (int64_t s = 0; s < static_cast<int64_t>(n_scans); ++s) {
-    const size_t k = static_cast<size_t>(s);
-    JudgeScan(scans.scans[k], scan_matches[k], slides, options, &(*covered)[k],
-              &scan_summaries[k]);
-  }
   *summary = CoveringSummary();
   summary->link_matched.assign(model.links().size(), 0);
   summary->link_covered.assign(model.links().size(), 0);
-  for (const CoveringSummary& scan : scan_summaries) {
-    summary->matched += scan.matched;
-    summary->covered += scan.covered;
-    for (size_t l = 0; l < scan.link_matched.size(); ++l) {
-      summary->link_matched[l] += scan.link_matched[l];
-      summary->link_covered[l] += scan.link_covered[l];
+  covered->assign(n_scans, {});
+  std::vector<float> block;
+  for (size_t s = 0; s < n_scans; ++s) {
+    const OrganizedScan& scan = scans.scans[s];
+    (*covered)[s].assign(scan.size(), 0);
+    const int w = scan.organized() ? options.window : 0;
+    const Window area = MatchedWindow(scan, scan_matches[s], w);
+    // Per window cell: the signed distance of its closest sample, that
+    // distance, its link (the first of equally close ones).
+    std::vector<float> offset(area.size(), 0.0f);
+    std::vector<float> closest(area.size(), std::numeric_limits<float>::infinity());
+    std::vector<int> owner(area.size(), -1);
+    for (const Match& m : scan_matches[s]) {
+      const size_t local = area.Local(scan.RowOf(m.cell), scan.ColOf(m.cell));
+      if (!(m.distance < closest[local])) continue;
+      closest[local] = m.distance;
+      offset[local] = m.offset;
+      owner[local] = m.link;
     }
+    const int r_end = area.r0 + area.rows - 1, c_end = area.c0 + area.cols - 1;
+    for (int c = area.c0; c <= c_end; ++c) {
+      for (int r = area.r0; r <= r_end; ++r) {
+        const size_t local = area.Local(r, c);
+        if (owner[local] < 0) continue;
+        block.clear();
+        for (int cc = std::max(area.c0, c - w); cc <= std::min(c_end, c + w); ++cc) {
+          for (int rr = std::max(area.r0, r - w); rr <= std::min(r_end, r + w); ++rr) {
+            const size_t other = area.Local(rr, cc);
+            if (owner[other] >= 0) block.push_back(offset[other]);
+          }
+        }
+        std::nth_element(block.begin(), block.begin() + block.size() / 2, block.end());
+        const size_t link = static_cast<size_t>(owner[local]);
+        const bool is_covering = !slides[link] && (block[block.size() / 2] > options.area_offset ||
+                                                   offset[local] > options.point_offset);
+        ++summary->matched;
+        ++summary->link_matched[link];
+        if (!is_covering) continue;
+        (*covered)[s][scan.Index(r, c)] = 1;
+        ++summary->covered;
+        ++summary->link_covered[link];
+      }
+    }
+    if (w > 0) SpreadVerdicts(scan, area, owner, w, options.gate, &(*covered)[s], summary);
   }
   return Status::Ok();
 }
