@@ -297,7 +297,7 @@ Status RefineChain(const KinematicModel& model, const ScanSet& scans, const Cell
   ceres::Solver::Options solver_options;
   // Tens of thousands of rows and 6 + joints columns: the normal equations
   // (Levenberg-Marquardt's damping on their diagonal) are cheaper than a QR
-  // of the Jacobian, and gave the demo's fit the same estimate to 1e-13.
+  // of the Jacobian, for the same estimate to rounding.
   solver_options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   solver_options.max_num_iterations = icp.solver_iterations;
   solver_options.num_threads = 1;  // deterministic sums

@@ -164,6 +164,7 @@ CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
 // `scans` (RefinementMissingCells; empty: none) as missing, the coverings
 // are found on `scans` as they are. weights: the search's (nullptr:
 // uniform). *covered: the last round's coverings (empty without rounds).
+// The covariance (options.refinement.chain.covariance) is the last solve's.
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const CellMask& missing,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
