@@ -1,6 +1,6 @@
 # Weighted, constrained ICP engine (paper Sec. 5.1.2, 5.2.2, 6.2.2):
 # synthetic recovery to 1e-6 and within noise, parameterisations, stops,
-# determinism; the height map's convex tips and the symmetry axis (6.1);
+# determinism; the 2D grid's radius queries; the height map's convex tips and the symmetry axis (6.1);
 # on virtual scans: the cable-tube outlier case with edges and
 # the Eq. (9) joint sweep; the floor and the rough base registration
 # (Sec. 5.1.1); the whole-chain refinement and its covariance on the
@@ -16,6 +16,7 @@ edgefit_add_test(solvers_test
     solvers/observability_test.cc
     solvers/base_hypotheses_test.cc
     solvers/pose_evidence_test.cc
+    solvers/point_grid2_test.cc
   LIBS edgefit::solvers edgefit::model OpenMP::OpenMP_CXX)
 # On virtual scans of whole robots: the release half only (label e2e). Under
 # ASan + UBSan it took 490 s of the sanitizer half's CPU; the same stages run
