@@ -25,14 +25,19 @@ class PointGrid2 {
     for (size_t i = 0; i < points.size(); ++i) {
       const int64_t cx = Coord(points[i].x()), cy = Coord(points[i].y());
       cells_[Pack(cx, cy)].push_back(static_cast<int>(i));
-      x0 = std::min(x0, cx), y0 = std::min(y0, cy), x1 = std::max(x1, cx), y1 = std::max(y1, cy);
+      x0 = std::min(x0, cx);
+      y0 = std::min(y0, cy);
+      x1 = std::max(x1, cx);
+      y1 = std::max(y1, cy);
     }
     if (points.empty()) return;
     // The box grown by a cell each way, when its bits fit kMaxNearBits.
     const double bits = (static_cast<double>(x1 - x0) + 3.0) * (static_cast<double>(y1 - y0) + 3.0);
     if (bits > kMaxNearBits) return;
-    near_x0_ = x0 - 1, near_y0_ = y0 - 1;
-    near_width_ = x1 - x0 + 3, near_height_ = y1 - y0 + 3;
+    near_x0_ = x0 - 1;
+    near_y0_ = y0 - 1;
+    near_width_ = x1 - x0 + 3;
+    near_height_ = y1 - y0 + 3;
     near_.assign(static_cast<size_t>((near_width_ * near_height_ + 63) / 64), 0);
     for (const Eigen::Vector2d& point : points) {
       const int64_t cx = Coord(point.x()) - near_x0_, cy = Coord(point.y()) - near_y0_;
