@@ -1,7 +1,9 @@
 #include "edgefit/scan/mixed_pixels.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace edgefit {
 
@@ -39,35 +41,60 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
   // Lines along which each cell is mixed.
   std::vector<uint8_t> line_count(scan.size(), 0);
   const int rows = scan.rows(), cols = scan.cols();
-  // Range of a cell, NaN when missing or off the grid.
-  auto range = [&](int row, int col) -> double {
-    if (row < 0 || row >= rows || col < 0 || col >= cols) return std::nan("");
-    const size_t i = scan.Index(row, col);
-    return scan.IsValid(i) ? static_cast<double>(scan.point_scanner(i).norm()) : std::nan("");
-  };
   const double step = LatticeStep(scan);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
 
-  // Row, column and the two diagonals.
+  // Row, column and the two diagonals; each reaches two cells either way.
   constexpr int kLines[4][2] = {{0, 1}, {1, 0}, {1, 1}, {1, -1}};
-#pragma omp parallel for schedule(static)
-  for (int col = 0; col < cols; ++col) {
-    for (int row = 0; row < rows; ++row) {
-      const double r = range(row, col);
-      if (std::isnan(r)) continue;
-      const double tol = Tolerance(options, r, step);
-      int lines = 0;
-      for (const auto& line : kLines) {
-        const int dr = line[0], dc = line[1];
-        const double a1 = range(row - dr, col - dc), b1 = range(row + dr, col + dc);
-        if (std::isnan(a1) || std::isnan(b1)) continue;
-        if (!(r > std::min(a1, b1) + tol && r < std::max(a1, b1) - tol)) continue;
-        const double a2 = range(row - 2 * dr, col - 2 * dc);
-        const double b2 = range(row + 2 * dr, col + 2 * dc);
-        const double from_a = std::isnan(a2) ? a1 : 2.0 * a1 - a2;
-        const double from_b = std::isnan(b2) ? b1 : 2.0 * b1 - b2;
-        lines += std::abs(r - from_a) > tol && std::abs(r - from_b) > tol;
+  constexpr int kReach = 2, kHeld = 2 * kReach + 1;
+#pragma omp parallel
+  {
+    // The ranges of the columns col - 2 .. col + 2 (NaN: missing or off
+    // the grid), each computed once as a thread's columns go by.
+    std::array<std::vector<float>, kHeld> held_ranges;
+    std::array<int, kHeld> held_col;
+    held_col.fill(std::numeric_limits<int>::min());
+    auto column = [&](int col) -> const std::vector<float>& {
+      const size_t slot = static_cast<size_t>(((col % kHeld) + kHeld) % kHeld);
+      std::vector<float>& ranges = held_ranges[slot];
+      if (held_col[slot] != col) {
+        held_col[slot] = col;
+        ranges.assign(static_cast<size_t>(rows), nan);
+        if (col >= 0 && col < cols) {
+          for (int row = 0; row < rows; ++row) {
+            const size_t i = scan.Index(row, col);
+            if (scan.IsValid(i)) ranges[static_cast<size_t>(row)] = scan.point_scanner(i).norm();
+          }
+        }
       }
-      line_count[scan.Index(row, col)] = static_cast<uint8_t>(lines);
+      return ranges;
+    };
+#pragma omp for schedule(static)
+    for (int col = 0; col < cols; ++col) {
+      std::array<const std::vector<float>*, kHeld> near;  // columns col - 2 .. col + 2
+      for (int k = 0; k < kHeld; ++k) near[static_cast<size_t>(k)] = &column(col - kReach + k);
+      auto range = [&](int row, int dc) -> double {
+        if (row < 0 || row >= rows) return std::nan("");
+        return static_cast<double>((*near[static_cast<size_t>(dc + kReach)])[static_cast<size_t>(row)]);
+      };
+      for (int row = 0; row < rows; ++row) {
+        const double r = range(row, 0);
+        if (std::isnan(r)) continue;
+        const double tol = Tolerance(options, r, step);
+        int lines = 0;
+        for (const auto& line : kLines) {
+          const int dr = line[0], dc = line[1];
+          const double a1 = range(row - dr, -dc), b1 = range(row + dr, dc);
+          if (std::isnan(a1) || std::isnan(b1)) continue;
+          if (!(r > std::min(a1, b1) + tol && r < std::max(a1, b1) - tol)) continue;
+          const double a2 = range(row - 2 * dr, -2 * dc);
+          const double b2 = range(row + 2 * dr, 2 * dc);
+          const double from_a = std::isnan(a2) ? a1 : 2.0 * a1 - a2;
+          const double from_b = std::isnan(b2) ? b1 : 2.0 * b1 - b2;
+          lines += std::abs(r - from_a) > tol && std::abs(r - from_b) > tol;
+        }
+        line_count[scan.Index(row, col)] = static_cast<uint8_t>(lines);
+      }
     }
   }
   // A cell mixed along min_lines, or along neighbour_lines beside one that is.
