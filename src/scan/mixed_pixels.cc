@@ -75,7 +75,8 @@ std::vector<uint8_t> FindMixedPixels(const OrganizedScan& scan, const MixedPixel
       for (int k = 0; k < kHeld; ++k) near[static_cast<size_t>(k)] = &column(col - kReach + k);
       auto range = [&](int row, int dc) -> double {
         if (row < 0 || row >= rows) return std::nan("");
-        return static_cast<double>((*near[static_cast<size_t>(dc + kReach)])[static_cast<size_t>(row)]);
+        const std::vector<float>& ranges = *near[static_cast<size_t>(dc + kReach)];
+        return static_cast<double>(ranges[static_cast<size_t>(row)]);
       };
       for (int row = 0; row < rows; ++row) {
         const double r = range(row, 0);
