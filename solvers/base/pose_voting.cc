@@ -105,9 +105,17 @@ std::vector<VotedPose> Cluster(std::vector<VotedPose> candidates, double max_tra
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const VotedPose& a, const VotedPose& b) { return a.votes > b.votes; });
   std::vector<VotedPose> clusters;
+  // |D.translation()| below is the distance between the two positions up
+  // to rounding (1e-14 m here): farther than max_translation + 1 nm, the
+  // pair fails its test without the product.
+  const double reject_sq = (max_translation + 1e-9) * (max_translation + 1e-9);
   for (const VotedPose& c : candidates) {
     bool joined = false;
     for (VotedPose& cluster : clusters) {
+      if ((cluster.T_world_model.translation() - c.T_world_model.translation()).squaredNorm() >
+          reject_sq) {
+        continue;
+      }
       const Pose D = cluster.T_world_model.inverse() * c.T_world_model;
       if (D.translation().norm() <= max_translation &&
           Eigen::AngleAxisd(D.linear()).angle() <= max_rotation) {
