@@ -2,7 +2,7 @@
 """How closely a posture explains a real depth frame: the model rendered into the frame, pixel by pixel.
 
 For each frame of a real-frame set (scripts/real_frames.py's layout) and each of two postures, the
-recorded one (truth/NNN.json: its joints on its reference base) and the fitted one (NNN_MODE.json
+recorded one (truth/NNN.json: its joints on its reference base, the one "reference_method" names) and the fitted one (NNN_MODE.json
 that real_frames.py --out wrote), the URDF's collision meshes are posed, sampled densely and drawn
 into the camera's pixels (nearest surface wins), then compared with the frame's depth where both
 have one:
@@ -11,7 +11,8 @@ have one:
   inner     median signed (measured - model) over pixels 4 px inside the model's outline and
             within 5 cm [mm]: positive when the frame reads farther than the model
 Same renderer and measures for both postures, each over its own pixels. Needs numpy and Open3D
-(Debian's python3-open3d; only its mesh reading and sampling are used).
+(Debian's python3-open3d; only its mesh reading is used). The meshes are sampled with a seeded
+generator: the same figures every run.
 
   benchmarks/depth_agreement.py ../shared/data/real/lbr_med7_zed2i /tmp/out unknown
 """
@@ -25,6 +26,9 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 import open3d as o3d
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+from real_frames import reference_poses  # noqa: E402  (the set's layout has one reader)
 
 
 def rpy_matrix(r, p, y):
@@ -65,8 +69,19 @@ class Robot:
         if len(m.triangles) == 0:
           continue
         scale = np.array([float(v) for v in mesh.get("scale", "1 1 1").split()])
-        count = max(1000, int(m.get_surface_area() * float(np.prod(scale)) ** (2 / 3) * samples_per_m2))
-        points = np.asarray(m.sample_points_uniformly(number_of_points=count).points) * scale
+        vertices = np.asarray(m.vertices) * scale
+        triangles = vertices[np.asarray(m.triangles)]
+        area = 0.5 * np.linalg.norm(np.cross(triangles[:, 1] - triangles[:, 0],
+                                             triangles[:, 2] - triangles[:, 0]), axis=1)
+        count = max(1000, int(area.sum() * samples_per_m2))
+        # Area-weighted, seeded: the same points every run.
+        rng = np.random.default_rng(1)
+        pick = rng.choice(len(area), size=count, p=area / area.sum())
+        a, b = rng.random(count), rng.random(count)
+        flip = a + b > 1.0
+        a[flip], b[flip] = 1.0 - a[flip], 1.0 - b[flip]
+        t = triangles[pick]
+        points = t[:, 0] + a[:, None] * (t[:, 1] - t[:, 0]) + b[:, None] * (t[:, 2] - t[:, 0])
         self.parts.append((link.get("name"), origin(geometry), points))
         break
     self.joints = [(j.get("name"), j.get("type"), j.find("parent").get("link"), j.find("child").get("link"),
@@ -162,19 +177,26 @@ def main():
   if len(sys.argv) != 4:
     sys.exit(__doc__)
   folder, results, mode = sys.argv[1:]
-  urdf = sorted(glob.glob(os.path.join(folder, "robot", "*.urdf")))[0]
-  robot = Robot(urdf)
+  urdfs = sorted(glob.glob(os.path.join(folder, "robot", "*.urdf")))
+  frames = sorted(glob.glob(os.path.join(folder, "frames", "*.pcd")))
+  if not urdfs:
+    sys.exit("%s: no robot/*.urdf" % folder)
+  if not frames:
+    sys.exit("%s: no frames/*.pcd (depth PNG frames are not read here)" % folder)
+  robot = Robot(urdfs[0])
   K = intrinsics(os.path.join(folder, "camera_info.yaml"))
   print("| frame | recorded: med\\|d\\| mm, <1cm, inner mm | fitted (%s): med\\|d\\| mm, <1cm, inner mm |" % mode)
   print("|---|---|---|")
-  for frame in sorted(glob.glob(os.path.join(folder, "frames", "*.pcd"))):
+  for frame in frames:
     name = os.path.basename(frame)[:-4]
     z, T_world_camera = read_pcd(frame)
     T_camera_world = np.linalg.inv(T_world_camera)
     truth = json.load(open(os.path.join(folder, "truth", name + ".json")))
     fit = json.load(open(os.path.join(results, "%s_%s.json" % (name, mode))))
     cells = []
-    for T_world_base, q in ((truth["T_world_base_reference"], truth["joints"]),
+    references = reference_poses(truth)
+    reference = references[truth.get("reference_method", next(iter(references)))]
+    for T_world_base, q in ((reference, truth["joints"]),
                             (fit["base"]["T_world_base"], fit["joints"])):
       model = robot.depth(T_camera_world, np.array(T_world_base), q, K, z.shape[1], z.shape[0])
       cells.append("%.1f, %.3f, %+.1f" % agreement(z, model))
