@@ -223,10 +223,17 @@ Status FitWithEdges(const KinematicModel& model, const ScanSet& scans,
   CellMask covered;
   const bool stations_moved =
       LargestCorrection(result->stations) > options.stations.refit_correction;
-  FitOptions refine_options = options;  // the second pass has the covariance
-  refine_options.refinement.chain.covariance &= !stations_moved;
-  EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, work, mixed, &final_tools.search, weights, cad,
-                                           refine_options, say, result, &covered));
+  if (!stations_moved) {
+    EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, work, mixed, &final_tools.search, weights,
+                                             cad, options, say, result, &covered));
+  } else if (options.refinement.chain.refine && options.refinement.coverings.rounds > 0) {
+    // The chain is fitted again on the aligned stations, below: all it
+    // takes from here is the coverings at the estimate the stations were
+    // last registered at.
+    EDGEFIT_RETURN_IF_ERROR(
+        CoveringsAtTheEstimate(model, work, &final_tools.search, cad, options, say, result,
+                               &covered));
+  }
   const bool covered_link = CoveringsHideALink(result->coverings, options.refinement.coverings);
   if (stations_moved || covered_link) {
     say(std::string("chain: ") +

@@ -37,6 +37,23 @@ CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
   return mixed;
 }
 
+Status CoveringsAtTheEstimate(const KinematicModel& model, const ScanSet& scans,
+                              CorrespondenceSearch* search, const CadSamples& cad,
+                              const FitOptions& options, const ProgressFn& say, FitResult* result,
+                              CellMask* covered) {
+  EDGEFIT_RETURN_IF_ERROR(FindCoverings(
+      model, scans, search, cad.chain, result->T_world_base, result->q,
+      options.refinement.coverings, options.refinement.chain.icp.correspondence.use_lattice,
+      covered, &result->coverings));
+  char line[200];
+  std::snprintf(line, sizeof(line),
+                "chain: %zu of %zu matched points lie off the CAD surface over an area "
+                "(jackets, covers): left out",
+                result->coverings.covered, result->coverings.matched);
+  say(line);
+  return Status::Ok();
+}
+
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const CellMask& missing,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
@@ -65,15 +82,8 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const
   // Coverings (jackets, covers) found at the estimate and left out, then
   // the chain refined again without them.
   for (int round = 0; round < rounds; ++round) {
-    EDGEFIT_RETURN_IF_ERROR(FindCoverings(
-        model, scans, search, chain_samples, result->T_world_base, result->q, coverings,
-        refinement.icp.correspondence.use_lattice, covered, &result->coverings));
-    char line[200];
-    std::snprintf(line, sizeof(line),
-                  "chain: %zu of %zu matched points lie off the CAD surface over an area "
-                  "(jackets, covers): refining without them",
-                  result->coverings.covered, result->coverings.matched);
-    say(line);
+    EDGEFIT_RETURN_IF_ERROR(
+        CoveringsAtTheEstimate(model, scans, search, cad, options, say, result, covered));
     CorrespondenceSearch masked_search(&scans, weights, covered, mixed);
     EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, &masked_search, chain_samples,
                                         round + 1 < rounds ? settling : refinement,

@@ -157,6 +157,13 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
 CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
                                 const ProgressFn& say, FitResult* result);
 
+// The coverings (options.refinement.coverings: jackets, covers) of `scans`
+// at result's estimate, by `search`, into *covered and result->coverings.
+Status CoveringsAtTheEstimate(const KinematicModel& model, const ScanSet& scans,
+                              CorrespondenceSearch* search, const CadSamples& cad,
+                              const FitOptions& options, const ProgressFn& say, FitResult* result,
+                              CellMask* covered);
+
 // The whole chain refined at once (options.refinement), or its covariance
 // alone, from result->T_world_base and result->q, in place; then, for
 // options.refinement.coverings.rounds, refined again without the coverings
