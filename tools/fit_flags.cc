@@ -29,7 +29,7 @@ DEFINE_bool(refine_chain, true,
 DEFINE_bool(align_stations, true,
             "Register each station to the fitted model and fit again when one moved (their "
             "registration residuals); --noalign_stations: use the written station poses.");
-DEFINE_int32(station_rounds, 2,
+DEFINE_int32(station_rounds, 3,
              "Registrations of the stations: after the first (at the sequential fit), the chain "
              "is refined on the corrected stations and they are registered again there, until "
              "their corrections settle or this many were made; 1: once.");

@@ -42,6 +42,8 @@ bool StationAlignmentOptions::IsValid(std::string* error) const {
     *error = "station alignment: the prior's sigmas must be positive";
   } else if (rounds < 1) {
     *error = "station alignment: need rounds >= 1";
+  } else if (!(settled_change >= 0.0)) {
+    *error = "station alignment: settled_change must be >= 0";
   } else if (!(max_covered_share >= 0.0 && max_covered_share <= 1.0)) {
     *error = "station alignment: max_covered_share must be in [0, 1]";
   } else {

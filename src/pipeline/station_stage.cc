@@ -68,7 +68,7 @@ Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, const Cel
                   "changed by up to %.2f mm at 5 m",
                   round + 1, 1e3 * change);
     say(line);
-    if (change <= stations.refit_correction) break;
+    if (change <= stations.settled_change) break;
   }
   result->timings.stations = Since(start);
   return Status::Ok();
