@@ -34,8 +34,8 @@ bool BaseRoughOptions::IsValid(std::string* error) const {
       single_corner_rescored < 1) {
     return fail("bad single-corner search options");
   }
-  if (!(noise_reference > 0.0) || !(max_noise_scale >= 1.0)) {
-    return fail("noise_reference must be > 0 and max_noise_scale >= 1");
+  if (!(noise_reference > 0.0) || !(max_noise_scale >= 1.0) || !(noise_level_ratio > 1.0)) {
+    return fail("noise_reference must be > 0, max_noise_scale >= 1, noise_level_ratio > 1");
   }
   return true;
 }
@@ -49,6 +49,27 @@ BaseRoughOptions BaseRoughOptions::ScaledToNoise(double sigma) const {
   scaled.pair_tolerance *= k;
   scaled.inlier_distance *= k;
   return scaled;
+}
+
+std::vector<double> BaseRoughOptions::NoiseLevels(const ScanNoise& noise) const {
+  auto scale = [this](double sigma) {
+    return std::isfinite(sigma) ? std::clamp(sigma / noise_reference, 1.0, max_noise_scale) : 1.0;
+  };
+  std::vector<double> levels = {noise.median_sigma};
+  std::vector<double> bins;
+  for (const double sigma : noise.sigma) {
+    if (std::isfinite(sigma)) bins.push_back(sigma);
+  }
+  std::sort(bins.begin(), bins.end());
+  for (const double sigma : bins) {
+    const double k = scale(sigma);
+    const bool apart = std::all_of(levels.begin(), levels.end(), [&](double kept) {
+      const double ratio = k / scale(kept);
+      return ratio > noise_level_ratio || ratio < 1.0 / noise_level_ratio;
+    });
+    if (apart) levels.push_back(sigma);
+  }
+  return levels;
 }
 
 namespace {

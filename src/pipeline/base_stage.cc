@@ -15,10 +15,13 @@ namespace {
 
 // The rough stage of options.base.method into result->base_rough (and
 // result->arm_tips); arm tips that find no placement fall back to the
-// cross sections.
+// cross sections, which run at each of noise_levels (the scan's sigmas,
+// BaseRoughOptions::NoiseLevels): result->base_rough is the first level's
+// that found corners, with every level's candidates.
 Status RoughBase(const ScanSet& scans, double floor_z, const KinematicModel& model,
                  const TriangleMesh& base_mesh, const FitOptions& options,
-                 const BasePoseLoss& base_loss, const ProgressFn& say, FitResult* result) {
+                 const std::vector<double>& noise_levels, const BasePoseLoss& base_loss,
+                 const ProgressFn& say, FitResult* result) {
   using Method = BaseOptions::Method;
   if (options.base.method == Method::kArmTips) {
     say("base: rough registration (arm tips in a height map, symmetry axis)");
@@ -45,10 +48,35 @@ Status RoughBase(const ScanSet& scans, double floor_z, const KinematicModel& mod
     say("base: " + status.message() + "; trying cross-section corners (Sec. 5.1.1)");
   }
   say("base: rough registration (cross-section corners, RANSAC)");
-  BaseRoughOptions rough = options.base.cross_sections;
-  rough.seed = options.seed;
   result->base_rough_method = Method::kCrossSections;
-  return FitBaseRough(scans, floor_z, base_mesh, rough, &result->base_rough);
+  Status first = Status::Ok();  // the first level's failure, when none finds corners
+  bool found = false;
+  for (const double sigma : noise_levels) {
+    BaseRoughOptions rough = options.base.cross_sections.ScaledToNoise(sigma);
+    rough.seed = options.seed;
+    BaseRoughResult level;
+    const Status status = FitBaseRough(scans, floor_z, base_mesh, rough, &level);
+    if (noise_levels.size() > 1) {
+      char line[200];
+      std::snprintf(line, sizeof(line),
+                    "base: section corners at %.1f times their distances: %d in the scan, %zu "
+                    "candidates",
+                    rough.inlier_distance / options.base.cross_sections.inlier_distance,
+                    level.scan_corners, status.ok() ? level.candidates.size() : size_t{0});
+      say(line);
+    }
+    if (!status.ok()) {
+      if (first.ok()) first = status;
+      continue;
+    }
+    if (!found) {
+      result->base_rough = level;
+    } else {
+      for (const Pose& T : level.candidates) result->base_rough.candidates.push_back(T);
+    }
+    found = true;
+  }
+  return found ? Status::Ok() : first;
 }
 
 // The upright stage on the scans turned by R_level (up to the world z):
@@ -58,7 +86,8 @@ Status RoughBase(const ScanSet& scans, double floor_z, const KinematicModel& mod
 Status UprightPoses(const KinematicModel& model, const ScanSet& scans,
                     const Eigen::Matrix3d& R_level, const TriangleMesh& base_mesh,
                     const BasePoseLoss& base_loss, size_t samples, const FitOptions& options,
-                    const ProgressFn& say, FitResult* result, std::vector<Pose>* poses) {
+                    const std::vector<double>& noise_levels, const ProgressFn& say,
+                    FitResult* result, std::vector<Pose>* poses) {
   const bool turned = !R_level.isIdentity(1e-12);
   Pose T_level_world = Pose::Identity();
   T_level_world.linear() = R_level;
@@ -82,7 +111,8 @@ Status UprightPoses(const KinematicModel& model, const ScanSet& scans,
   const Pose T_world_level = T_level_world.inverse();
   const BasePoseLoss levelled_loss = [&](const Pose& T) { return base_loss(T_world_level * T); };
   EDGEFIT_RETURN_IF_ERROR(
-      RoughBase(search, floor_z, model, base_mesh, levelled_options, levelled_loss, say, result));
+      RoughBase(search, floor_z, model, base_mesh, levelled_options, noise_levels, levelled_loss,
+                say, result));
   for (const Pose& T :
        RankBaseHypotheses(&result->base_rough.candidates, base_mesh.BoundingBox().sizes(),
                           result->base_rough_method == BaseOptions::Method::kCrossSections,
@@ -97,7 +127,8 @@ Status UprightPoses(const KinematicModel& model, const ScanSet& scans,
 // its poses after *poses (the chain tells them apart).
 void UprightPosesOnThePlane(const KinematicModel& model, const ScanSet& scans,
                             const TriangleMesh& base_mesh, const BasePoseLoss& base_loss,
-                            size_t samples, const FitOptions& options, const ProgressFn& say,
+                            size_t samples, const FitOptions& options,
+                            const std::vector<double>& noise_levels, const ProgressFn& say,
                             FitResult* result, std::vector<Pose>* poses) {
   UpOptions up_options = options.base.up_estimation;
   up_options.seed = options.seed;
@@ -118,7 +149,7 @@ void UprightPosesOnThePlane(const KinematicModel& model, const ScanSet& scans,
   FitResult levelled = *result;
   std::vector<Pose> more;
   const Status status = UprightPoses(model, scans, LevellingRotation(up.up), base_mesh, base_loss,
-                                     samples, options, say, &levelled, &more);
+                                     samples, options, noise_levels, say, &levelled, &more);
   if (!status.ok()) {
     say("up: levelled to the plane: " + status.message());
     return;
@@ -177,28 +208,37 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const B
   std::vector<Pose> upright_poses;
   if (mounting != Mounting::kAny) {
     // The section corners' distances widened to the scan's local noise
-    // (BaseRoughOptions::ScaledToNoise): a depth camera's few millimetres.
-    FitOptions scaled = options;
-    const double sigma = EstimateScanNoise(scans, ScanNoiseOptions()).median_sigma;
-    scaled.base.cross_sections = options.base.cross_sections.ScaledToNoise(sigma);
-    if (scaled.base.cross_sections.inlier_distance > options.base.cross_sections.inlier_distance) {
-      char line[200];
+    // (BaseRoughOptions::ScaledToNoise): a depth camera's few millimetres,
+    // at each of its levels over the ranges (NoiseLevels).
+    const BaseRoughOptions& sections = options.base.cross_sections;
+    const std::vector<double> noise_levels =
+        sections.NoiseLevels(EstimateScanNoise(scans, ScanNoiseOptions()));
+    if (noise_levels.size() > 1 || sections.ScaledToNoise(noise_levels.front()).inlier_distance >
+                                       sections.inlier_distance) {
+      std::string scales;
+      for (const double sigma : noise_levels) {
+        char k[32];
+        std::snprintf(k, sizeof(k), "%s%.1f", scales.empty() ? "" : ", ",
+                      sections.ScaledToNoise(sigma).inlier_distance / sections.inlier_distance);
+        scales += k;
+      }
+      char line[300];
       std::snprintf(line, sizeof(line),
-                    "base: the scan's local noise is %.1f mm: section corners and matches at "
-                    "%.1f times their distances",
-                    1e3 * sigma,
-                    scaled.base.cross_sections.inlier_distance /
-                        options.base.cross_sections.inlier_distance);
+                    "base: the scan's local noise is %.1f mm (median; up to %.1f mm by "
+                    "range): section corners and matches at %s times their distances",
+                    1e3 * noise_levels.front(),
+                    1e3 * *std::max_element(noise_levels.begin(), noise_levels.end()),
+                    scales.c_str());
       say(line);
     }
     const Eigen::Matrix3d R_level =
         up_given ? LevellingRotation(result->up) : Eigen::Matrix3d::Identity();
-    upright = UprightPoses(model, scans, R_level, base_mesh, base_loss, base_sweep.size(), scaled,
-                           say, result, &upright_poses);
+    upright = UprightPoses(model, scans, R_level, base_mesh, base_loss, base_sweep.size(), options,
+                           noise_levels, say, result, &upright_poses);
     if (!upright.ok()) result->base_rough.candidates.clear();
     if (!up_given && mounting == Mounting::kAuto && camera) {
-      UprightPosesOnThePlane(model, scans, base_mesh, base_loss, base_sweep.size(), scaled, say,
-                             result, &upright_poses);
+      UprightPosesOnThePlane(model, scans, base_mesh, base_loss, base_sweep.size(), options,
+                             noise_levels, say, result, &upright_poses);
       if (!upright_poses.empty()) upright = Status::Ok();
     }
   }

@@ -38,6 +38,7 @@ bool NoiseOptions::IsValid(std::string* error) const {
   if (!(reference_sigma > 0.0)) *error = "noise: reference_sigma must be > 0";
   else if (!(max_scale >= 1.0)) *error = "noise: max_scale must be >= 1";
   else if (!(gate > 0.0)) *error = "noise: gate must be > 0";
+  else if (!(patch_deviation >= 0.0)) *error = "noise: patch_deviation must be >= 0";
   else return true;
   return false;
 }

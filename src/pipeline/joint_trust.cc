@@ -40,24 +40,36 @@ void DistrustBelowUnmatched(const KinematicModel& model, FitResult* result) {
   }
 }
 
-void DistrustAboveTornPartner(const KinematicModel& model, FitResult* result) {
+void DistrustTornPairs(const KinematicModel& model, FitResult* result) {
   if (!(result->noise_scale > 1.0)) return;
-  for (BodyQuality& b : result->bodies) {
-    if (b.verdict != JointVerdict::kOk || !b.symmetric || b.joint.empty()) continue;
-    const int joint = model.JointIndex(b.joint);
+  // Ambiguous on its own: two values of its body fit about equally, not for
+  // a neighbour's sake (judged before this rule changes any verdict).
+  std::vector<bool> torn(result->bodies.size(), false);
+  for (size_t i = 0; i < result->bodies.size(); ++i) {
+    const BodyQuality& b = result->bodies[i];
+    torn[i] = b.verdict == JointVerdict::kAmbiguous && !b.unpinned && !b.chain_unmatched &&
+              !b.partner_torn;
+  }
+  auto distrust = [&](BodyQuality* b, const BodyQuality& partner) {
+    if (b->verdict != JointVerdict::kOk) return;
+    b->verdict = JointVerdict::kAmbiguous;
+    b->partner_torn = true;
+    b->torn_partner = partner.joint;
+    b->ok = false;
+  };
+  for (size_t i = 0; i < result->bodies.size(); ++i) {
+    const BodyQuality& round = result->bodies[i];
+    if (!round.symmetric || round.joint.empty()) continue;
+    const int joint = model.JointIndex(round.joint);
     const Body body = MakeBody(model, model.joints()[static_cast<size_t>(joint)].child_link, joint);
-    for (const BodyQuality& partner : result->bodies) {
-      const int p = model.JointIndex(partner.joint);
+    for (size_t k = 0; k < result->bodies.size(); ++k) {  // its partner: the first joint below
+      const int p = model.JointIndex(result->bodies[k].joint);
       if (p < 0) continue;
       const int above = model.joints()[static_cast<size_t>(p)].parent_link;
       if (std::find(body.links.begin(), body.links.end(), above) == body.links.end()) continue;
-      if (partner.verdict == JointVerdict::kAmbiguous && !partner.unpinned &&
-          !partner.chain_unmatched && !partner.partner_torn) {
-        b.verdict = JointVerdict::kAmbiguous;
-        b.partner_torn = true;
-        b.ok = false;
-      }
-      break;  // the first joint below the body
+      if (torn[k]) distrust(&result->bodies[i], result->bodies[k]);
+      if (torn[i]) distrust(&result->bodies[k], result->bodies[i]);
+      break;
     }
   }
 }

@@ -63,8 +63,9 @@ FitOptions ScaledToNoise(const FitOptions& options, double sigma) {
   // The sensor's error is correlated over the surface (a depth camera's
   // matcher smooths it: 0.8 mm from pixel to pixel on the ZED 2i frames,
   // 11 mm against the CAD): in the covariance each patch deviates as a
-  // whole, as the CAD's own deviation does.
-  refinement.chain.cad_deviation = std::max(refinement.chain.cad_deviation, sigma);
+  // whole, as the CAD's own deviation does (NoiseOptions::patch_deviation).
+  refinement.chain.cad_deviation =
+      std::max(refinement.chain.cad_deviation, options.noise.patch_deviation * sigma);
   // No coverings: a jacket lies 2-5 mm off its link, inside a depth
   // camera's noise, and what stands out of the CAD over an area there is the
   // camera's correlated error. Left out, it is a one-sided trim of the noise

@@ -105,9 +105,9 @@ std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const Fi
                   b.link.c_str(), b.joint.c_str(), value);
   } else if (b.partner_torn) {
     std::snprintf(line, sizeof(line),
-                  "%s is not trusted: %s = %.4f was fitted with the joint below it, which has "
-                  "two values that fit the scan about as well",
-                  b.link.c_str(), b.joint.c_str(), value);
+                  "%s is not trusted: %s = %.4f was fitted with %s, which has two values that "
+                  "fit the scan about as well",
+                  b.link.c_str(), b.joint.c_str(), value, b.torn_partner.c_str());
   } else if (b.better_elsewhere) {
     std::snprintf(line, sizeof(line),
                   "%s is in a wrong basin: %s = %.4f, with the joints below it fitted again "
@@ -230,7 +230,7 @@ Status JudgeQuality(const KinematicModel& model, WeightedIcp* icp, const CadSamp
     result->bodies.push_back(quality);
   }
   DistrustBelowUnmatched(model, result);
-  DistrustAboveTornPartner(model, result);
+  DistrustTornPairs(model, result);
   SayWhyNotOk(model, resolved, options, result);
   return Status::Ok();
 }

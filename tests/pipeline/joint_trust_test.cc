@@ -2,7 +2,7 @@
 // bundled robot's verdicts: below a body that does not match, nothing is
 // ok; on a noisy scan a round joint whose partner has two values is not ok,
 // on a laser scan (noise_scale 1) it stays ok, and a partner merely not
-// pinned leaves it ok.
+// pinned leaves it ok; nor is the partner ok when the round joint has two.
 #include "edgefit/pipeline/joint_trust.h"
 
 #include <gtest/gtest.h>
@@ -67,19 +67,44 @@ TEST(JointTrustTest, NothingOkBelowABodyThatDoesNotMatch) {
 TEST(JointTrustTest, ARoundJointIsNotOkWhenItsPartnerHasTwoValuesOnANoisyScan) {
   const KinematicModel model = BundledRobot();
   FitResult noisy = Verdicts(model, 2.0, JointVerdict::kAmbiguous, false);
-  DistrustAboveTornPartner(model, &noisy);
+  DistrustTornPairs(model, &noisy);
   EXPECT_EQ(Of(noisy, "joint_3").verdict, JointVerdict::kAmbiguous);
   EXPECT_TRUE(Of(noisy, "joint_3").partner_torn);
   EXPECT_FALSE(Of(noisy, "joint_3").ok);
   EXPECT_EQ(Of(noisy, "joint_2").verdict, JointVerdict::kOk);  // not round
 
   FitResult laser = Verdicts(model, 1.0, JointVerdict::kAmbiguous, false);
-  DistrustAboveTornPartner(model, &laser);
+  DistrustTornPairs(model, &laser);
   EXPECT_EQ(Of(laser, "joint_3").verdict, JointVerdict::kOk);
 
   FitResult unpinned = Verdicts(model, 2.0, JointVerdict::kAmbiguous, true);
-  DistrustAboveTornPartner(model, &unpinned);
+  DistrustTornPairs(model, &unpinned);
   EXPECT_EQ(Of(unpinned, "joint_3").verdict, JointVerdict::kOk);
+}
+
+TEST(JointTrustTest, APartnerIsNotOkWhenItsRoundJointHasTwoValuesOnANoisyScan) {
+  const KinematicModel model = BundledRobot();
+  for (const double noise_scale : {1.0, 2.0}) {
+    FitResult result = Verdicts(model, noise_scale, JointVerdict::kOk, false);
+    for (BodyQuality& b : result.bodies) {
+      if (b.joint != "joint_3") continue;
+      b.verdict = JointVerdict::kAmbiguous;  // two values of its own
+      b.ok = false;
+    }
+    DistrustTornPairs(model, &result);
+    const BodyQuality& partner = Of(result, "joint_4");
+    if (noise_scale > 1.0) {
+      EXPECT_EQ(partner.verdict, JointVerdict::kAmbiguous);
+      EXPECT_TRUE(partner.partner_torn);
+      EXPECT_EQ(partner.torn_partner, "joint_3");
+      EXPECT_FALSE(partner.ok);
+    } else {
+      EXPECT_EQ(partner.verdict, JointVerdict::kOk);
+    }
+    EXPECT_EQ(Of(result, "joint_5").verdict, JointVerdict::kOk);  // not its partner
+    EXPECT_EQ(Of(result, "joint_3").verdict, JointVerdict::kAmbiguous);
+    EXPECT_FALSE(Of(result, "joint_3").partner_torn);
+  }
 }
 
 }  // namespace

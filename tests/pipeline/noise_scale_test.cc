@@ -38,7 +38,7 @@ TEST(NoiseScaleTest, ADepthCamerasCentimetreWidensThem) {
   EXPECT_EQ(scaled.base.icp.correspondence.max_distance,
             options.base.icp.correspondence.max_distance);
   // The correlated error in the covariance's patches.
-  EXPECT_DOUBLE_EQ(scaled.refinement.chain.cad_deviation, sigma);
+  EXPECT_DOUBLE_EQ(scaled.refinement.chain.cad_deviation, options.noise.patch_deviation * sigma);
   // No coverings: a jacket's millimetres are inside the noise.
   EXPECT_EQ(scaled.refinement.coverings.rounds, 0);
   // Bounded, and off when asked.

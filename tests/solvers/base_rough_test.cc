@@ -128,5 +128,21 @@ TEST(BaseRoughTest, ScalingToNoiseKeepsLaserScansAndIsBounded) {
   EXPECT_EQ(wide.max_edge, options.max_edge);
 }
 
+TEST(BaseRoughTest, NoiseLevelsFollowTheRangesOfADepthCamera) {
+  const BaseRoughOptions options;
+  ScanNoise laser;  // about half a millimetre at every range: k = 1 throughout
+  laser.median_sigma = 0.0005;
+  laser.sigma = {NAN, 0.0004, 0.0005, 0.0006, 0.0007};
+  EXPECT_EQ(options.NoiseLevels(laser), std::vector<double>({0.0005}));
+  ScanNoise camera;  // the floor before the camera holds the median
+  camera.median_sigma = 0.0009;
+  camera.sigma = {0.0004, 0.001, 0.002, 0.0025, NAN, 0.0035, 0.0045, 0.02};
+  // The median (k 1), then 2 mm (k 2), 3.5 mm (k 3.5) and 20 mm (k at its
+  // bound, 6); 2.5 and 4.5 mm are within 1.5 times a kept k.
+  EXPECT_EQ(options.NoiseLevels(camera), std::vector<double>({0.0009, 0.002, 0.0035, 0.02}));
+  ScanNoise none;  // no measurement: the median's k = 1 alone
+  EXPECT_EQ(options.NoiseLevels(none), std::vector<double>({0.0}));
+}
+
 }  // namespace
 }  // namespace edgefit

@@ -75,10 +75,12 @@ struct BodyQuality {
   // the scan does not confirm, so it is not trusted (then ambiguous).
   bool chain_unmatched = false;
   // On a noisy scan (noise_scale > 1): a round joint (its sweep and ICP
-  // carried its children) whose partner, the joint just below it, has two
-  // values that fit about equally; the pair was fitted together, so the
-  // joint's value holds for one of the partner's two (then ambiguous).
+  // carried its children) and its partner, the joint just below it, were
+  // fitted together, and the other one (torn_partner) has two values that
+  // fit about equally: this joint's value holds for one of them (then
+  // ambiguous).
   bool partner_torn = false;
+  std::string torn_partner;
   double joint_std = std::numeric_limits<double>::quiet_NaN();  // [rad] or [m]
   bool ok = false;  // the body matches and the verdict is ok or unobservable
 };
