@@ -150,11 +150,12 @@ struct NoiseOptions {
   // On a noisy scan each 0.2 m patch of the surface deviates as a whole by
   // this many times the noise measured where the base meets the scan (the
   // covariance's correlated part, noise_scale.cc): the joints' and the
-  // base's standard deviations. At 1 sigma, the 32 joints said ok on 22
-  // virtual depth frames of three robots were off by a median 1.5 stds
-  // (0.67 for a right std), up to 6.9 (one 5.0 degrees off with a std of
-  // 1.08); on the real ZED 2i frames the calibrations' spread was 1.46
-  // times their stated std (benchmarks/results/2026-11-30-noise-levels.md).
+  // base's standard deviations. At 1 sigma, the 32 joints said ok on 18
+  // virtual depth frames of two robots and the 5 real ZED 2i frames were
+  // off by a median 1.44 stds (0.67 for a right std), up to 6.9 (one 5.0
+  // degrees off with a std of 1.08); the real frames' calibrations spread
+  // 1.5 times their stated std, at 2 sigma 0.75 times
+  // (benchmarks/results/2026-11-30-noise-levels.md).
   double patch_deviation = 2.0;  // [sigma]
 
   bool IsValid(std::string* error) const;
