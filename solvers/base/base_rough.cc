@@ -40,10 +40,14 @@ bool BaseRoughOptions::IsValid(std::string* error) const {
   return true;
 }
 
+double BaseRoughOptions::NoiseScale(double sigma) const {
+  return std::isfinite(sigma) ? std::clamp(sigma / noise_reference, 1.0, max_noise_scale) : 1.0;
+}
+
 BaseRoughOptions BaseRoughOptions::ScaledToNoise(double sigma) const {
   BaseRoughOptions scaled = *this;
-  const double k = std::clamp(sigma / noise_reference, 1.0, max_noise_scale);
-  if (!(k > 1.0)) return scaled;  // NaN (no measurement) too
+  const double k = NoiseScale(sigma);
+  if (!(k > 1.0)) return scaled;
   scaled.corners.radius *= k;
   scaled.corners.separation *= k;
   scaled.pair_tolerance *= k;
@@ -52,9 +56,6 @@ BaseRoughOptions BaseRoughOptions::ScaledToNoise(double sigma) const {
 }
 
 std::vector<double> BaseRoughOptions::NoiseLevels(const ScanNoise& noise) const {
-  auto scale = [this](double sigma) {
-    return std::isfinite(sigma) ? std::clamp(sigma / noise_reference, 1.0, max_noise_scale) : 1.0;
-  };
   std::vector<double> levels = {noise.median_sigma};
   std::vector<double> bins;
   for (const double sigma : noise.sigma) {
@@ -62,9 +63,9 @@ std::vector<double> BaseRoughOptions::NoiseLevels(const ScanNoise& noise) const 
   }
   std::sort(bins.begin(), bins.end());
   for (const double sigma : bins) {
-    const double k = scale(sigma);
+    const double k = NoiseScale(sigma);
     const bool apart = std::all_of(levels.begin(), levels.end(), [&](double kept) {
-      const double ratio = k / scale(kept);
+      const double ratio = k / NoiseScale(kept);
       return ratio > noise_level_ratio || ratio < 1.0 / noise_level_ratio;
     });
     if (apart) levels.push_back(sigma);

@@ -79,7 +79,7 @@ struct BaseRoughOptions {
   double max_noise_scale = 6.0;
   // A depth camera's noise grows with the square of the range, and the
   // scan's median is mostly its near surfaces': the bundled robot's frame at
-  // 3.9 m (B6 002 of the page below) read 0.9 mm, found no corner at k = 1,
+  // 3.9 m (B6 002 of the page below) read 1.0 mm, found no corner at k = 1,
   // and was found 12 mm off at 4 mm. NoiseLevels gives the median's sigma
   // and that of every range bin (ScanNoise::sigma) whose k is more than
   // noise_level_ratio times the nearest one kept; the upright stage runs at
@@ -92,6 +92,8 @@ struct BaseRoughOptions {
   // the four distances times k = clamp(sigma / noise_reference, 1,
   // max_noise_scale); unchanged at k = 1.
   BaseRoughOptions ScaledToNoise(double sigma) const;
+  // That k for sigma [m]; 1 for NaN (no measurement).
+  double NoiseScale(double sigma) const;
   // The sigmas [m] to scale to, the median's first, then by rising k.
   std::vector<double> NoiseLevels(const ScanNoise& noise) const;
 };

@@ -61,7 +61,7 @@ Status RoughBase(const ScanSet& scans, double floor_z, const KinematicModel& mod
       std::snprintf(line, sizeof(line),
                     "base: section corners at %.1f times their distances: %d in the scan, %zu "
                     "candidates",
-                    rough.inlier_distance / options.base.cross_sections.inlier_distance,
+                    options.base.cross_sections.NoiseScale(sigma),
                     level.scan_corners, status.ok() ? level.candidates.size() : size_t{0});
       say(line);
     }
@@ -213,13 +213,12 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const B
     const BaseRoughOptions& sections = options.base.cross_sections;
     const std::vector<double> noise_levels =
         sections.NoiseLevels(EstimateScanNoise(scans, ScanNoiseOptions()));
-    if (noise_levels.size() > 1 || sections.ScaledToNoise(noise_levels.front()).inlier_distance >
-                                       sections.inlier_distance) {
+    if (noise_levels.size() > 1 || sections.NoiseScale(noise_levels.front()) > 1.0) {
       std::string scales;
       for (const double sigma : noise_levels) {
         char k[32];
         std::snprintf(k, sizeof(k), "%s%.1f", scales.empty() ? "" : ", ",
-                      sections.ScaledToNoise(sigma).inlier_distance / sections.inlier_distance);
+                      sections.NoiseScale(sigma));
         scales += k;
       }
       char line[300];
