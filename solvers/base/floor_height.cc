@@ -74,6 +74,8 @@ Status EstimateFloorHeight(const ScanSet& scans, const Eigen::AlignedBox3d& roi_
         if (!scan.IsValid(i) || !StencilNormal(scan, row, col, options, &n)) continue;
         if (std::abs(R.row(2).dot(n.cast<double>())) < options.normal_cos) continue;
         const Eigen::Vector3d p = scan.PointWorld(i);
+        // A floor faces up, to a station above it: a ceiling faces down.
+        if (!(p.z() < scan.T_world_scanner().translation().z())) continue;
         if (!roi_world.isEmpty() && !roi_world.contains(p)) continue;
         auto& bin = histogram[static_cast<int64_t>(std::floor(p.z() / kBin))];
         ++bin.first;
@@ -82,22 +84,41 @@ Status EstimateFloorHeight(const ScanSet& scans, const Eigen::AlignedBox3d& roi_
     }
   }
   if (histogram.empty()) return Status::Error("no horizontal surface (floor) in the scan");
-  int64_t best_bin = 0;
+  // The surface: the fullest window of 2 kWindow + 1 bins, not the fullest
+  // bin (a depth camera's far floor spreads its level points over many
+  // bins, its noise growing with range squared, where a table top near the
+  // camera fills one). Its height: the mean of the window about the
+  // fullest bin within it.
+  constexpr int64_t kWindow = 2;
+  const auto window = [&](int64_t centre, double* sum_z) {
+    size_t count = 0;
+    for (auto it = histogram.lower_bound(centre - kWindow);
+         it != histogram.end() && it->first <= centre + kWindow; ++it) {
+      count += it->second.first;
+      if (sum_z != nullptr) *sum_z += it->second.second;
+    }
+    return count;
+  };
+  int64_t surface = 0;
   size_t best_count = 0;
-  for (const auto& [bin, count_sum] : histogram) {
-    if (count_sum.first > best_count) {
-      best_count = count_sum.first;
-      best_bin = bin;
+  for (const auto& entry : histogram) {
+    const size_t count = window(entry.first, nullptr);
+    if (count > best_count) {
+      best_count = count;
+      surface = entry.first;
+    }
+  }
+  int64_t best_bin = surface;
+  best_count = 0;
+  for (auto it = histogram.lower_bound(surface - kWindow);
+       it != histogram.end() && it->first <= surface + kWindow; ++it) {
+    if (it->second.first > best_count) {
+      best_count = it->second.first;
+      best_bin = it->first;
     }
   }
   double sum = 0.0;
-  size_t count = 0;
-  for (int64_t bin = best_bin - 2; bin <= best_bin + 2; ++bin) {
-    const auto it = histogram.find(bin);
-    if (it == histogram.end()) continue;
-    count += it->second.first;
-    sum += it->second.second;
-  }
+  const size_t count = window(best_bin, &sum);
   *floor_z = sum / static_cast<double>(count);
   return Status::Ok();
 }

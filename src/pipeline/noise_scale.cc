@@ -80,7 +80,17 @@ FitOptions ScaledToNoise(const FitOptions& options, double sigma) {
   stations.max_distance = std::max(stations.max_distance, stations.final_gate);
   stations.huber_scale *= k;
   stations.point_sigma *= k;
-  scaled.quality.max_rms *= k;
+  // The verdict's RMS limit keeps its ratio to the joint ICP's final gate
+  // (3 mm of 5 on laser scans): a bound that only samples spread across
+  // the whole gate reach (uniform within it: 0.58 of the gate). At k times
+  // alone it would be the noise itself (k x 3 mm = sigma), which the RMS of
+  // a right link's matches within 3 sigma reaches wherever that link is
+  // noisier than where the base meets the scan: on depth frames the noise
+  // grows with range squared, and 28 of the 35 links said not to match in
+  // 22 fits of virtual and 15 of real depth frames had 82-100 % of their
+  // samples within the gate, at 1.0-1.6 times sigma (median 1.08)
+  // (benchmarks/results/2026-11-30-floor-and-rms-limit.md).
+  scaled.quality.max_rms *= scaled.chain.joint_icp.final_gate / options.chain.joint_icp.final_gate;
   scaled.quality.observability.surface_tolerance *= k;
   scaled.mixed_pixels.tolerance *= k;
   return scaled;

@@ -76,9 +76,10 @@ std::string WhyNotOk(const KinematicModel& model, const BodyQuality& b, const Fi
   } else if (b.verdict != JointVerdict::kAmbiguous) {
     std::snprintf(line, sizeof(line),
                   "%s does not match the scan: %.0f%% of its visible samples within %.1f mm "
-                  "of the scanned surface (need %.0f%%), RMS %.2f mm",
+                  "of the scanned surface (need %.0f%%), RMS %.2f mm (at most %.2f)",
                   b.link.c_str(), 100.0 * b.inlier_share, 1e3 * options.chain.joint_icp.final_gate,
-                  100.0 * options.quality.min_inlier_share, 1e3 * b.rms);
+                  100.0 * options.quality.min_inlier_share, 1e3 * b.rms,
+                  1e3 * options.quality.max_rms);
   } else if (b.unpinned) {
     const bool prismatic = model.joints()[static_cast<size_t>(model.JointIndex(b.joint))].type ==
                            JointType::kPrismatic;

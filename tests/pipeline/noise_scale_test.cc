@@ -27,7 +27,8 @@ TEST(NoiseScaleTest, ADepthCamerasCentimetreWidensThem) {
   EXPECT_DOUBLE_EQ(NoiseScaleFor(sigma, options.noise), k);
   const FitOptions scaled = ScaledToNoise(options, sigma);
   EXPECT_DOUBLE_EQ(scaled.chain.sweep.tau_dist, k * options.chain.sweep.tau_dist);
-  EXPECT_DOUBLE_EQ(scaled.quality.max_rms, k * options.quality.max_rms);
+  // The RMS limit keeps its ratio to the final gate (3 mm of 5): 1.8 sigma.
+  EXPECT_DOUBLE_EQ(scaled.quality.max_rms, 1.8 * sigma);
   // Final gates and occlusion tolerances: at least 3 sigma.
   EXPECT_DOUBLE_EQ(scaled.chain.joint_icp.final_gate, 3.0 * sigma);
   EXPECT_DOUBLE_EQ(scaled.refinement.chain.visibility_tolerance, 3.0 * sigma);

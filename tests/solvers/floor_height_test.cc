@@ -2,12 +2,15 @@
 // virtual scan (3 scanners, 1.7 mm, 1 mm noise) of a round base with a box
 // on its side, 0.35 m tall, standing on the floor at z = 0: the floor's
 // height within a millimetre, the base's top when a box leaves the floor
-// out, and a clear error without a level surface.
+// out, and a clear error without a level surface. And a depth camera's
+// frame: a far floor, noisy with range squared, against a table top near
+// the camera.
 #include "solvers/base/floor_height.h"
 
 #include <gtest/gtest.h>
 
 #include "edgefit/model/primitive_meshes.h"
+#include "edgefit/scanner/depth_camera.h"
 #include "solvers/link_scan_test_util.h"
 
 namespace edgefit {
@@ -43,6 +46,64 @@ TEST(FloorHeightTest, TheRegionLimitsTheSearch) {
   double floor_z = 0.0;
   ASSERT_TRUE(EstimateFloorHeight(Scans(), top, FloorOptions(), &floor_z).ok());
   EXPECT_NEAR(floor_z, 0.35, 2e-3);
+}
+
+TEST(FloorHeightTest, ADepthCamerasFarNoisyFloorBeatsANearTable) {
+  // A camera 1.6 m high looking at the floor 5 m ahead, 1.5 mm of depth
+  // noise at 1 m (37 mm at 5 m); a 1 m table top 1.4-2.2 m in front of it
+  // (3-7 mm). The floor's level points outnumber the table's, but spread
+  // over many 5 mm bins: the table's one bin was the fullest.
+  Scene scene;
+  scene.meshes.push_back(testing_util::Floor());
+  SceneMesh table;
+  table.mesh_world.Append(MakeBoxMesh({0.8, 1.2, 1.0}), PoseFromXyzRpy({1.8, 0.0, 0.5}, {0, 0, 0}));
+  table.label = kLabelBackground;
+  table.kind = "table";
+  scene.meshes.push_back(std::move(table));
+  VirtualScanOptions options;
+  options.camera.width = 320;
+  options.camera.height = 240;
+  options.camera.camera.fx = options.camera.camera.fy = 300.0;
+  options.camera.camera.cx = 159.5;
+  options.camera.camera.cy = 119.5;
+  options.camera.sigma_at_1m = 0.0015;
+  options.camera.footprint_px = 0.0;
+  Pose T_world_camera;
+  ASSERT_TRUE(LookAt({0, 0, 1.6}, {5.0, 0, 0}, Eigen::Vector3d::UnitZ(), &T_world_camera));
+  VirtualScan scan;
+  ASSERT_TRUE(ScanScene(scene, {T_world_camera}, options, &scan).ok());
+  double floor_z = 1.0;
+  ASSERT_TRUE(
+      EstimateFloorHeight(scan.scans, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
+  EXPECT_NEAR(floor_z, 0.0, 0.01);
+}
+
+TEST(FloorHeightTest, ACeilingAboveTheCameraIsNotTheFloor) {
+  // A camera 1.6 m high looking level: the ceiling 0.6 m above it is seen
+  // nearer and smoother than the floor 1.6 m below; it faces down, the
+  // floor up.
+  Scene scene;
+  scene.meshes.push_back(testing_util::Floor());
+  SceneMesh ceiling = testing_util::Floor();
+  for (Eigen::Vector3d& v : ceiling.mesh_world.vertices) v.z() = 2.2;
+  ceiling.kind = "ceiling";
+  scene.meshes.push_back(std::move(ceiling));
+  VirtualScanOptions options;
+  options.camera.width = 320;
+  options.camera.height = 240;
+  options.camera.camera.fx = options.camera.camera.fy = 300.0;
+  options.camera.camera.cx = 159.5;
+  options.camera.camera.cy = 119.5;
+  options.camera.sigma_at_1m = 0.0015;
+  options.camera.footprint_px = 0.0;
+  Pose T_world_camera;
+  ASSERT_TRUE(LookAt({0, 0, 1.6}, {5.0, 0, 1.6}, Eigen::Vector3d::UnitZ(), &T_world_camera));
+  VirtualScan scan;
+  ASSERT_TRUE(ScanScene(scene, {T_world_camera}, options, &scan).ok());
+  double floor_z = 1.0;
+  ASSERT_TRUE(
+      EstimateFloorHeight(scan.scans, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
+  EXPECT_NEAR(floor_z, 0.0, 0.01);
 }
 
 TEST(FloorHeightTest, NoLevelSurfaceIsAnError) {
