@@ -36,8 +36,8 @@ struct FloorOptions {
 // when it is not empty: of the level points below the station that saw
 // them (a ceiling, seen from below, is not a floor), the 2.5 cm window
 // holding the most, and the mean height within 1.25 cm of its fullest 5 mm
-// bin. Fails when no level surface is found (no
-// organized scan, or no floor in view). Sequential and deterministic.
+// bin. Fails when no level surface is found (no organized scan, or no
+// floor in view). Sequential and deterministic.
 Status EstimateFloorHeight(const ScanSet& scans, const Eigen::AlignedBox3d& roi_world,
                            const FloorOptions& options, double* floor_z);
 

@@ -3,8 +3,8 @@
 // on its side, 0.35 m tall, standing on the floor at z = 0: the floor's
 // height within a millimetre, the base's top when a box leaves the floor
 // out, and a clear error without a level surface. And a depth camera's
-// frame: a far floor, noisy with range squared, against a table top near
-// the camera.
+// frames: a far floor, noisy with range squared, against a table top near
+// the camera; a ceiling above it.
 #include "solvers/base/floor_height.h"
 
 #include <gtest/gtest.h>
@@ -48,18 +48,10 @@ TEST(FloorHeightTest, TheRegionLimitsTheSearch) {
   EXPECT_NEAR(floor_z, 0.35, 2e-3);
 }
 
-TEST(FloorHeightTest, ADepthCamerasFarNoisyFloorBeatsANearTable) {
-  // A camera 1.6 m high looking at the floor 5 m ahead, 1.5 mm of depth
-  // noise at 1 m (37 mm at 5 m); a 1 m table top 1.4-2.2 m in front of it
-  // (3-7 mm). The floor's level points outnumber the table's, but spread
-  // over many 5 mm bins: the table's one bin was the fullest.
-  Scene scene;
-  scene.meshes.push_back(testing_util::Floor());
-  SceneMesh table;
-  table.mesh_world.Append(MakeBoxMesh({0.8, 1.2, 1.0}), PoseFromXyzRpy({1.8, 0.0, 0.5}, {0, 0, 0}));
-  table.label = kLabelBackground;
-  table.kind = "table";
-  scene.meshes.push_back(std::move(table));
+// A 320 x 240 depth camera (fx 300) at `eye` looking at `target`, 1.5 mm
+// of depth noise at 1 m growing with depth squared, scanning `scene`.
+ScanSet CameraFrame(const Scene& scene, const Eigen::Vector3d& eye,
+                    const Eigen::Vector3d& target) {
   VirtualScanOptions options;
   options.camera.width = 320;
   options.camera.height = 240;
@@ -69,12 +61,27 @@ TEST(FloorHeightTest, ADepthCamerasFarNoisyFloorBeatsANearTable) {
   options.camera.sigma_at_1m = 0.0015;
   options.camera.footprint_px = 0.0;
   Pose T_world_camera;
-  ASSERT_TRUE(LookAt({0, 0, 1.6}, {5.0, 0, 0}, Eigen::Vector3d::UnitZ(), &T_world_camera));
+  CHECK(LookAt(eye, target, Eigen::Vector3d::UnitZ(), &T_world_camera));
   VirtualScan scan;
-  ASSERT_TRUE(ScanScene(scene, {T_world_camera}, options, &scan).ok());
+  CHECK(ScanScene(scene, {T_world_camera}, options, &scan).ok());
+  return scan.scans;
+}
+
+TEST(FloorHeightTest, ADepthCamerasFarNoisyFloorBeatsANearTable) {
+  // A camera 1.6 m high looking at the floor 5 m ahead, 1.5 mm of depth
+  // noise at 1 m (37 mm at 5 m); a 1 m table top 1.4-2.2 m in front of it
+  // (3-8 mm). The floor's level points outnumber the table's, but spread
+  // over many 5 mm bins: the table's one bin was the fullest.
+  Scene scene;
+  scene.meshes.push_back(testing_util::Floor());
+  SceneMesh table;
+  table.mesh_world.Append(MakeBoxMesh({0.8, 1.2, 1.0}), PoseFromXyzRpy({1.8, 0.0, 0.5}, {0, 0, 0}));
+  table.label = kLabelBackground;
+  table.kind = "table";
+  scene.meshes.push_back(std::move(table));
+  const ScanSet frame = CameraFrame(scene, {0, 0, 1.6}, {5.0, 0, 0});
   double floor_z = 1.0;
-  ASSERT_TRUE(
-      EstimateFloorHeight(scan.scans, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
+  ASSERT_TRUE(EstimateFloorHeight(frame, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
   EXPECT_NEAR(floor_z, 0.0, 0.01);
 }
 
@@ -88,21 +95,9 @@ TEST(FloorHeightTest, ACeilingAboveTheCameraIsNotTheFloor) {
   for (Eigen::Vector3d& v : ceiling.mesh_world.vertices) v.z() = 2.2;
   ceiling.kind = "ceiling";
   scene.meshes.push_back(std::move(ceiling));
-  VirtualScanOptions options;
-  options.camera.width = 320;
-  options.camera.height = 240;
-  options.camera.camera.fx = options.camera.camera.fy = 300.0;
-  options.camera.camera.cx = 159.5;
-  options.camera.camera.cy = 119.5;
-  options.camera.sigma_at_1m = 0.0015;
-  options.camera.footprint_px = 0.0;
-  Pose T_world_camera;
-  ASSERT_TRUE(LookAt({0, 0, 1.6}, {5.0, 0, 1.6}, Eigen::Vector3d::UnitZ(), &T_world_camera));
-  VirtualScan scan;
-  ASSERT_TRUE(ScanScene(scene, {T_world_camera}, options, &scan).ok());
+  const ScanSet frame = CameraFrame(scene, {0, 0, 1.6}, {5.0, 0, 1.6});
   double floor_z = 1.0;
-  ASSERT_TRUE(
-      EstimateFloorHeight(scan.scans, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
+  ASSERT_TRUE(EstimateFloorHeight(frame, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
   EXPECT_NEAR(floor_z, 0.0, 0.01);
 }
 

@@ -107,7 +107,7 @@ struct RefinementOptions {
 struct QualityOptions {
   // A body fits when at least this share of its visible samples is within
   // the final gate of the joint ICP and their RMS is at most max_rms [m]
-  // (on a noisy scan the same share of its grown gate: noise_scale.h).
+  // (on a noisy scan 0.6 of the grown gate, as 3 mm is of 5: noise_scale.h).
   double min_inlier_share = 0.8;
   double max_rms = 0.003;  // [m]
   // A joint is not seen when fewer of its body's CAD samples than this are
