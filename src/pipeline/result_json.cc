@@ -97,6 +97,7 @@ json JointStatusJson(const KinematicModel& model, const FitResult& fit, const js
           alternatives.push_back({{"value", b.alternative_value},
                                   {"loss_margin_m", NumberOrNull(b.ambiguity_margin)}});
         }
+        if (!b.unpinned && !b.chain_unmatched && b.partner_torn) v["partner"] = b.torn_partner;
         break;
       case JointVerdict::kNotSeen:
         v["reason"] = "too few of its samples are visible at the fitted pose";

@@ -34,5 +34,28 @@ TEST(ResultJsonTest, ResultJsonOfAFitStoppedBeforeTheChain) {
   EXPECT_FALSE(result["quality"]["ok"].get<bool>());
 }
 
+// A round joint fitted with a partner that has two values names it.
+TEST(ResultJsonTest, ATornPairNamesThePartner) {
+  KinematicModel model;
+  std::vector<double> q;
+  testing_util::LoadBundledRobotWithGun("", &model, &q);
+  FitResult fit;
+  fit.q = model.ZeroJoints();
+  BodyQuality torn;
+  torn.link = "link_4";
+  torn.joint = "joint_4";
+  torn.verdict = JointVerdict::kAmbiguous;
+  torn.partner_torn = true;
+  torn.torn_partner = "joint_5";
+  fit.bodies.push_back(torn);
+  const nlohmann::json result = FitResultJson(model, AssetKind::kArticulated, FitOptions(), fit);
+  const nlohmann::json& status = result["joint_status"]["joint_4"];
+  EXPECT_EQ(status["verdict"], "ambiguous");
+  EXPECT_EQ(status["reason"], "the joint swept with it has two values that fit about as well");
+  EXPECT_EQ(status["partner"], "joint_5");
+  EXPECT_TRUE(status["alternatives"].empty());
+  EXPECT_FALSE(result["joint_status"]["joint_3"].contains("partner"));
+}
+
 }  // namespace
 }  // namespace edgefit
