@@ -11,15 +11,24 @@
 namespace edgefit {
 namespace {
 
+// The bundled robot with its gun, loaded once.
+const KinematicModel& Robot() {
+  static const KinematicModel* model = [] {
+    auto* loaded = new KinematicModel();
+    std::vector<double> q;
+    testing_util::LoadBundledRobotWithGun("", loaded, &q);
+    return loaded;
+  }();
+  return *model;
+}
+
 // result.json of a fit that stopped at the base's rough stage (as Fit()
 // leaves it: zero joints, no bodies, no covariance): every spread null,
 // every joint not seen.
 // Reading the covariance that never ran crashed edgefit fit on a scan of
 // an ABB IRB 6700's base alone.
 TEST(ResultJsonTest, ResultJsonOfAFitStoppedBeforeTheChain) {
-  KinematicModel model;
-  std::vector<double> q;
-  testing_util::LoadBundledRobotWithGun("", &model, &q);
+  const KinematicModel& model = Robot();
   FitResult fit;
   fit.q = model.ZeroJoints();
   fit.message = "base rough registration: no corners in the scan's cross-sections";
@@ -36,9 +45,7 @@ TEST(ResultJsonTest, ResultJsonOfAFitStoppedBeforeTheChain) {
 
 // A round joint fitted with a partner that has two values names it.
 TEST(ResultJsonTest, ATornPairNamesThePartner) {
-  KinematicModel model;
-  std::vector<double> q;
-  testing_util::LoadBundledRobotWithGun("", &model, &q);
+  const KinematicModel& model = Robot();
   FitResult fit;
   fit.q = model.ZeroJoints();
   BodyQuality torn;

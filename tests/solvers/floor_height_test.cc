@@ -49,9 +49,12 @@ TEST(FloorHeightTest, TheRegionLimitsTheSearch) {
 }
 
 // A 320 x 240 depth camera (fx 300) at `eye` looking at `target`, 1.5 mm
-// of depth noise at 1 m growing with depth squared, scanning `scene`.
-ScanSet CameraFrame(const Scene& scene, const Eigen::Vector3d& eye,
-                    const Eigen::Vector3d& target) {
+// of depth noise at 1 m growing with depth squared, scanning the floor and
+// `other`.
+ScanSet CameraFrame(SceneMesh other, const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
+  Scene scene;
+  scene.meshes.push_back(testing_util::Floor());
+  scene.meshes.push_back(std::move(other));
   VirtualScanOptions options;
   options.camera.width = 320;
   options.camera.height = 240;
@@ -72,14 +75,11 @@ TEST(FloorHeightTest, ADepthCamerasFarNoisyFloorBeatsANearTable) {
   // noise at 1 m (37 mm at 5 m); a 1 m table top 1.4-2.2 m in front of it
   // (3-8 mm). The floor's level points outnumber the table's, but spread
   // over many 5 mm bins: the table's one bin was the fullest.
-  Scene scene;
-  scene.meshes.push_back(testing_util::Floor());
   SceneMesh table;
   table.mesh_world.Append(MakeBoxMesh({0.8, 1.2, 1.0}), PoseFromXyzRpy({1.8, 0.0, 0.5}, {0, 0, 0}));
   table.label = kLabelBackground;
   table.kind = "table";
-  scene.meshes.push_back(std::move(table));
-  const ScanSet frame = CameraFrame(scene, {0, 0, 1.6}, {5.0, 0, 0});
+  const ScanSet frame = CameraFrame(table, {0, 0, 1.6}, {5.0, 0, 0});
   double floor_z = 1.0;
   ASSERT_TRUE(EstimateFloorHeight(frame, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
   EXPECT_NEAR(floor_z, 0.0, 0.01);
@@ -89,13 +89,10 @@ TEST(FloorHeightTest, ACeilingAboveTheCameraIsNotTheFloor) {
   // A camera 1.6 m high looking level: the ceiling 0.6 m above it is seen
   // nearer and smoother than the floor 1.6 m below; it faces down, the
   // floor up.
-  Scene scene;
-  scene.meshes.push_back(testing_util::Floor());
   SceneMesh ceiling = testing_util::Floor();
   for (Eigen::Vector3d& v : ceiling.mesh_world.vertices) v.z() = 2.2;
   ceiling.kind = "ceiling";
-  scene.meshes.push_back(std::move(ceiling));
-  const ScanSet frame = CameraFrame(scene, {0, 0, 1.6}, {5.0, 0, 1.6});
+  const ScanSet frame = CameraFrame(ceiling, {0, 0, 1.6}, {5.0, 0, 1.6});
   double floor_z = 1.0;
   ASSERT_TRUE(EstimateFloorHeight(frame, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
   EXPECT_NEAR(floor_z, 0.0, 0.01);
