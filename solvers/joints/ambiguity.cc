@@ -52,6 +52,12 @@ std::vector<bool> ChainFitter::PlacedApart(const Pose& T_world_base, const std::
   return apart;
 }
 
+bool ChainFitter::LinkMoved(const Pose& then, const Pose& now) const {
+  const Eigen::AngleAxisd turned(then.rotation().transpose() * now.rotation());
+  return std::abs(turned.angle()) > options_.resweep_tolerance_rad ||
+         (now.translation() - then.translation()).norm() > options_.resweep_tolerance_m;
+}
+
 Status ChainFitter::FitBranch(const Pose& T_world_base, size_t i, double value,
                               const std::vector<double>& q, const std::vector<JointRecord>& records,
                               std::vector<double>* q_other,
@@ -239,6 +245,13 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
     const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
     const size_t jj = static_cast<size_t>(record.joint);
     const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
+    const bool prismatic = j.type == JointType::kPrismatic;
+    const double basin = prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute;
+    if (!prismatic && record.full_sweep && !record.symmetric &&
+        !LinkMoved(record.T_world_parent_swept, T_world_link[static_cast<size_t>(j.parent_link)]) &&
+        Apart(j, record.full_sweep_q, (*q)[jj]) < basin) {
+      continue;  // swept where it hangs now, and its best was this basin
+    }
     const LinkMotion motion =
         LinkMotion::FromJoint(j, T_world_link[static_cast<size_t>(j.parent_link)]);
     const Body body = MakeBody(model_, j.child_link, record.joint);
@@ -249,11 +262,7 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
     if (body_sweep.points.empty()) continue;
     JointSweepSummary best;
     EDGEFIT_RETURN_IF_ERROR(sweep_->Sweep(body_sweep, motion, options_.sweep, &best));
-    const bool prismatic = j.type == JointType::kPrismatic;
-    if (Apart(j, best.q, (*q)[jj]) <
-        (prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute)) {
-      continue;
-    }
+    if (Apart(j, best.q, (*q)[jj]) < basin) continue;
     const double better = (sweep_->Loss(body_sweep, motion, (*q)[jj], options_.sweep) - best.loss) /
                           static_cast<double>(body_sweep.points.size());
     if (!(better > options_.ambiguity_mean_loss)) continue;

@@ -18,7 +18,7 @@ bool CadSampleOptions::IsValid(std::string* error) const {
     return false;
   }
   if (max_icp_samples < 100 || max_sweep_samples < 100 || max_subtree_icp_samples < 100 ||
-      max_chain_samples < 100) {
+      max_chain_samples < 100 || max_settling_chain_samples < 100) {
     if (error != nullptr) *error = "sample budgets must be >= 100";
     return false;
   }

@@ -27,13 +27,24 @@ struct CadSampleOptions {
   int max_icp_samples = 30000;
   int max_sweep_samples = 3000;
   // The subtree pass (a whole arm at once, one joint free) needs fewer:
-  // halving them kept every joint within 0.003 deg on the 5.9 M point
-  // weld_low scene and took a second off the chain.
-  int max_subtree_icp_samples = 15000;
+  // 15000 kept every joint within 0.003 deg of 30000 on the 5.9 M point
+  // weld_low scene and took a second off the chain; 7500 took 0.9 s more
+  // off the demo's realistic fit, the realistic bench's revolute mean
+  // unchanged (benchmarks/results/2026-12-01-fewer-samples-where-a-solve-follows.md).
+  // Halving max_icp_samples as well took 1.2 s more, but the base of a
+  // real Med7 frame (004) then settled 2.1 m off, in the clutter.
+  int max_subtree_icp_samples = 7500;
   // Per body in the whole-chain refinement and its covariance: on the
   // bundled robot 30000 halved the revolute errors of the sequential fit;
   // 5000 gained nothing (0.0075 deg) and put the base farther off.
   int max_chain_samples = 30000;
+  // The refinements between the station registrations (an estimate to
+  // register the stations at) take at most this many per body, evenly
+  // thinned from max_chain_samples; every other refinement takes those.
+  // Thinned too, the settling solves of the fit's last refinement left its
+  // last solve 0.1 mm to move at full density, in 6-7 iterations instead
+  // of 2: 0.2 s saved on the demo's fit, not kept.
+  int max_settling_chain_samples = 10000;
   // A model whose bounding box at its zero posture is longer than this on a
   // side is refused before it is sampled [m]: URDF lengths are metres, and
   // a URDF written in millimetres (a robot 3 km tall) would exhaust memory.

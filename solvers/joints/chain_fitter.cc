@@ -184,13 +184,7 @@ Status ChainFitter::ResweepMoved(const Pose& T_world_base, const std::vector<dou
   for (JointRecord& record : *records) {
     const Joint& j = model_.joints()[static_cast<size_t>(record.joint)];
     const size_t parent = static_cast<size_t>(j.parent_link);
-    const Pose T_now = model_.ForwardKinematics(*q, T_world_base)[parent];
-    const Eigen::AngleAxisd turned(T_swept[parent].rotation().transpose() * T_now.rotation());
-    if (std::abs(turned.angle()) <= options_.resweep_tolerance_rad &&
-        (T_now.translation() - T_swept[parent].translation()).norm() <=
-            options_.resweep_tolerance_m) {
-      continue;
-    }
+    if (!LinkMoved(T_swept[parent], model_.ForwardKinematics(*q, T_world_base)[parent])) continue;
     say_("chain: " + j.name + " again: the subtree pass moved the link it hangs from");
     EDGEFIT_RETURN_IF_ERROR(FitJoint(T_world_base, q, &record, /*resweep=*/true));
     *reswept = true;
@@ -316,6 +310,11 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
     ThinSamples(samples_.max_icp_samples, &body_icp);
     ThinSamples(samples_.max_sweep_samples, &body_sweep);
     EDGEFIT_RETURN_IF_ERROR(sweep());
+  }
+  if (!local) {
+    record->full_sweep = !record->symmetric;
+    record->full_sweep_q = record->sweep.q;
+    record->T_world_parent_swept = T_world_link[static_cast<size_t>(j.parent_link)];
   }
   if (record->symmetric && revolute && !local && options_.pair_sweep_step > 0.0 &&
       record->sweep_margin < options_.flat_sweep_loss) {

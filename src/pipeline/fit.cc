@@ -55,6 +55,7 @@ CadSamples SampleCad(const KinematicModel& model, const FitOptions& options) {
   sampling.spacing = options.samples.sweep_spacing;
   cad.sweep = SampleModelSurfaces(model, sampling);
   cad.chain = ChainSamples(model, cad, options);
+  cad.chain_settling = SettlingSamples(cad.chain, options);
   return cad;
 }
 

@@ -23,6 +23,13 @@ std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadS
   return chain_samples;
 }
 
+std::vector<SurfaceSamples> SettlingSamples(const std::vector<SurfaceSamples>& chain,
+                                            const FitOptions& options) {
+  std::vector<SurfaceSamples> settling = chain;
+  for (SurfaceSamples& s : settling) ThinSamples(options.samples.max_settling_chain_samples, &s);
+  return settling;
+}
+
 CellMask RefinementMissingCells(const ScanSet& scans, const FitOptions& options,
                                 const ProgressFn& say, FitResult* result) {
   if (!options.refinement.chain.refine || !options.refine_without_mixed_pixels ||
@@ -57,7 +64,7 @@ Status CoveringsAtTheEstimate(const KinematicModel& model, const ScanSet& scans,
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const CellMask& missing,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                        FitResult* result, CellMask* covered) {
+                        FitResult* result, CellMask* covered, bool settle_only) {
   covered->clear();
   const auto start = std::chrono::steady_clock::now();
   const ChainRefinementOptions& refinement = options.refinement.chain;
@@ -67,17 +74,19 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const
   const CellMask* mixed = missing.empty() ? nullptr : &missing;
   CorrespondenceSearch unmixed_search(&scans, weights, nullptr, mixed);
   CorrespondenceSearch* refine_search = mixed != nullptr ? &unmixed_search : search;
-  const std::vector<SurfaceSamples>& chain_samples = cad.chain;
   // The covariance (chain.covariance) of the last solve only: the result
-  // keeps no other.
+  // keeps no other. settle_only: every solve on the thinned samples
+  // (CadSampleOptions::max_settling_chain_samples), none with it.
   const CoveringOptions& coverings = options.refinement.coverings;
   const int rounds = refinement.refine ? coverings.rounds : 0;
   ChainRefinementOptions settling = refinement;
   settling.covariance = false;
-  EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, refine_search, chain_samples,
-                                      rounds > 0 ? settling : refinement, options.residuals,
-                                      &result->T_world_base, &result->q,
-                                      &result->chain_refinement));
+  auto solve = [&](bool last, CorrespondenceSearch* on) {
+    return RefineChain(model, scans, mixed, on, settle_only ? cad.chain_settling : cad.chain,
+                       settle_only || !last ? settling : refinement, options.residuals,
+                       &result->T_world_base, &result->q, &result->chain_refinement);
+  };
+  EDGEFIT_RETURN_IF_ERROR(solve(rounds == 0, refine_search));
 
   // Coverings (jackets, covers) found at the estimate and left out, then
   // the chain refined again without them.
@@ -85,10 +94,7 @@ Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const
     EDGEFIT_RETURN_IF_ERROR(
         CoveringsAtTheEstimate(model, scans, search, cad, options, say, result, covered));
     CorrespondenceSearch masked_search(&scans, weights, covered, mixed);
-    EDGEFIT_RETURN_IF_ERROR(RefineChain(model, scans, mixed, &masked_search, chain_samples,
-                                        round + 1 < rounds ? settling : refinement,
-                                        options.residuals, &result->T_world_base, &result->q,
-                                        &result->chain_refinement));
+    EDGEFIT_RETURN_IF_ERROR(solve(round + 1 == rounds, &masked_search));
   }
   result->timings.refine = Since(start);
   if (refinement.refine) {

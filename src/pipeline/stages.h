@@ -43,7 +43,8 @@ inline bool AnyCameraFrame(const ScanSet& scans) {
 // whole-chain stages (stations, refinement, coverings), made once by
 // ChainSamples.
 struct CadSamples {
-  std::vector<SurfaceSamples> icp, sweep, chain;
+  // chain_settling: chain thinned to CadSampleOptions::max_settling_chain_samples.
+  std::vector<SurfaceSamples> icp, sweep, chain, chain_settling;
 };
 
 // What the stages search and fit with on one scan set: the nearest scan
@@ -149,6 +150,10 @@ Status RoughBasePoses(const KinematicModel& model, const ScanSet& scans, const B
 // model.links() order (empty for links without a body of their own).
 std::vector<SurfaceSamples> ChainSamples(const KinematicModel& model, const CadSamples& cad,
                                          const FitOptions& options);
+// Those samples thinned for the refinements between the station
+// registrations (CadSampleOptions::max_settling_chain_samples).
+std::vector<SurfaceSamples> SettlingSamples(const std::vector<SurfaceSamples>& chain,
+                                            const FitOptions& options);
 
 // The cells of `scans` the whole-chain refinement takes as missing: their
 // mixed pixels (FitOptions::refine_without_mixed_pixels), found once per
@@ -172,10 +177,12 @@ Status CoveringsAtTheEstimate(const KinematicModel& model, const ScanSet& scans,
 // are found on `scans` as they are. weights: the search's (nullptr:
 // uniform). *covered: the last round's coverings (empty without rounds).
 // The covariance (options.refinement.chain.covariance) is the last solve's.
+// settle_only: an estimate to register the stations at: every solve on
+// cad.chain_settling, none with the covariance.
 Status RefineWholeChain(const KinematicModel& model, const ScanSet& scans, const CellMask& missing,
                         CorrespondenceSearch* search, const CellWeights* weights,
                         const CadSamples& cad, const FitOptions& options, const ProgressFn& say,
-                        FitResult* result, CellMask* covered);
+                        FitResult* result, CellMask* covered, bool settle_only = false);
 
 // Extension: every joint's basin checked at the final values
 // (ChainFitter::CheckFinalBasins, with `chain` on the same scans as

@@ -18,10 +18,6 @@ Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, const Cel
   std::vector<Pose> T_written;
   for (const OrganizedScan& scan : scans->scans) T_written.push_back(scan.T_world_scanner());
   const int rounds = options.refinement.chain.refine ? stations.rounds : 1;
-  // The refinements between the registrations: an estimate to register
-  // at, without the covariance (the fit's last refinement has it).
-  FitOptions settling = options;
-  settling.refinement.chain.covariance = false;
   for (int round = 0; round < rounds; ++round) {
     if (round > 0) {
       // The chain refined on the stations as last registered, so that the
@@ -29,8 +25,11 @@ Status AlignStationsStage(const KinematicModel& model, ScanSet* scans, const Cel
       // from the written poses again, at which `search` was built.
       CorrespondenceSearch aligned_search(scans, weights);
       CellMask covered;
+      // An estimate to register at (settle_only: the fit's last refinement
+      // has the covariance).
       EDGEFIT_RETURN_IF_ERROR(RefineWholeChain(model, *scans, missing, &aligned_search, weights,
-                                               cad, settling, say, result, &covered));
+                                               cad, options, say, result, &covered,
+                                               /*settle_only=*/true));
       for (size_t k = 0; k < T_written.size(); ++k) {
         scans->scans[k].set_T_world_scanner(T_written[k]);
       }
