@@ -28,11 +28,12 @@ struct CadSampleOptions {
   int max_sweep_samples = 3000;
   // The subtree pass (a whole arm at once, one joint free) needs fewer:
   // 15000 kept every joint within 0.003 deg of 30000 on the 5.9 M point
-  // weld_low scene and took a second off the chain; 7500 took 0.9 s more
-  // off the demo's realistic fit, the realistic bench's revolute mean
-  // unchanged (benchmarks/results/2026-12-01-fewer-samples-where-a-solve-follows.md).
-  // Halving max_icp_samples as well took 1.2 s more, but the base of a
-  // real Med7 frame (004) then settled 2.1 m off, in the clutter.
+  // weld_low scene and took a second off the chain. 7500, with the two
+  // changes below it on the same page, kept the realistic bench's revolute
+  // mean (benchmarks/results/2026-12-01-fewer-samples-where-a-solve-follows.md).
+  // Halving max_icp_samples as well took about 1.2 s more off the demo's
+  // fit, but the base of a real Med7 frame (004) then settled 2.1 m off,
+  // in the clutter.
   int max_subtree_icp_samples = 7500;
   // Per body in the whole-chain refinement and its covariance: on the
   // bundled robot 30000 halved the revolute errors of the sequential fit;
@@ -43,7 +44,7 @@ struct CadSampleOptions {
   // thinned from max_chain_samples; every other refinement takes those.
   // Thinned too, the settling solves of the fit's last refinement left its
   // last solve 0.1 mm to move at full density, in 6-7 iterations instead
-  // of 2: 0.2 s saved on the demo's fit, not kept.
+  // of 2: the demo's fit took 0.2 s longer, not kept.
   int max_settling_chain_samples = 10000;
   // A model whose bounding box at its zero posture is longer than this on a
   // side is refused before it is sampled [m]: URDF lengths are metres, and
