@@ -247,7 +247,7 @@ Status ChainFitter::CheckFinalBasins(const Pose& T_world_base, bool take, std::v
     const std::vector<Pose> T_world_link = model_.ForwardKinematics(*q, T_world_base);
     const bool prismatic = j.type == JointType::kPrismatic;
     const double basin = prismatic ? options_.final_basin_prismatic : options_.final_basin_revolute;
-    if (!prismatic && record.full_sweep && !record.symmetric &&
+    if (record.full_sweep &&
         !LinkMoved(record.T_world_parent_swept, T_world_link[static_cast<size_t>(j.parent_link)]) &&
         Apart(j, record.full_sweep_q, (*q)[jj]) < basin) {
       continue;  // swept where it hangs now, and its best was this basin

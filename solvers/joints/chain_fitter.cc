@@ -312,7 +312,7 @@ Status ChainFitter::FitJoint(const Pose& T_world_base, std::vector<double>* q, J
     EDGEFIT_RETURN_IF_ERROR(sweep());
   }
   if (!local) {
-    record->full_sweep = !record->symmetric;
+    record->full_sweep = revolute && !record->symmetric;
     record->full_sweep_q = record->sweep.q;
     record->T_world_parent_swept = T_world_link[static_cast<size_t>(j.parent_link)];
   }

@@ -156,9 +156,10 @@ struct JointRecord {
   JointSweepSummary sweep;
   double sweep_margin = std::numeric_limits<double>::infinity();  // runner-up, per sample [m]
   int icp_iterations = 0;
-  // FitJoint's last sweep of the body alone (not symmetric) over the
-  // joint's whole range: its best value, and the pose of the link the joint
-  // hangs from then (CheckFinalBasins does not sweep it again there).
+  // full_sweep: FitJoint's last sweep over the joint's whole range was of
+  // a revolute body alone (not symmetric); full_sweep_q its best value, and
+  // the pose of the link the joint hangs from then (CheckFinalBasins does
+  // not sweep it again there).
   bool full_sweep = false;
   double full_sweep_q = 0.0;
   Pose T_world_parent_swept = Pose::Identity();
@@ -213,7 +214,7 @@ class ChainFitter {
   // whose sweep over the whole range (JointRecord::full_sweep) found this
   // basin with the link it hangs from within resweep_tolerance_* of where
   // it is now is not swept again: the same sweep would find the same (the
-  // demo's realistic fit: these sweeps 1.36 -> 0.66 s). A prismatic one
+  // demo's realistic fit: these sweeps 1.35 -> 0.68 s). A prismatic one
   // always is (its sweep costs little): a jaw sliding along itself has a
   // flat profile, which a wrist moved by less than that can tip. A branch
   // better by more

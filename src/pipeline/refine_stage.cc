@@ -126,7 +126,7 @@ Status RefineIntoBestBasins(const KinematicModel& model, ChainFitter* chain, con
     result->timings.alternatives += Since(round_start);
     char line[160];
     std::snprintf(line, sizeof(line),
-                  "final basins: every joint swept at the final values in %.2f s",
+                  "final basins: every joint checked at the final values in %.2f s",
                   Since(round_start));
     say(line);
     if (!take || !moved) break;

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "edgefit/model/primitive_meshes.h"
 #include "edgefit/scanner/depth_camera.h"
 #include "solvers/link_scan_test_util.h"
@@ -79,7 +81,7 @@ TEST(FloorHeightTest, ADepthCamerasFarNoisyFloorBeatsANearTable) {
   table.mesh_world.Append(MakeBoxMesh({0.8, 1.2, 1.0}), PoseFromXyzRpy({1.8, 0.0, 0.5}, {0, 0, 0}));
   table.label = kLabelBackground;
   table.kind = "table";
-  const ScanSet frame = CameraFrame(table, {0, 0, 1.6}, {5.0, 0, 0});
+  const ScanSet frame = CameraFrame(std::move(table), {0, 0, 1.6}, {5.0, 0, 0});
   double floor_z = 1.0;
   ASSERT_TRUE(EstimateFloorHeight(frame, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
   EXPECT_NEAR(floor_z, 0.0, 0.01);
@@ -92,7 +94,7 @@ TEST(FloorHeightTest, ACeilingAboveTheCameraIsNotTheFloor) {
   SceneMesh ceiling = testing_util::Floor();
   for (Eigen::Vector3d& v : ceiling.mesh_world.vertices) v.z() = 2.2;
   ceiling.kind = "ceiling";
-  const ScanSet frame = CameraFrame(ceiling, {0, 0, 1.6}, {5.0, 0, 1.6});
+  const ScanSet frame = CameraFrame(std::move(ceiling), {0, 0, 1.6}, {5.0, 0, 1.6});
   double floor_z = 1.0;
   ASSERT_TRUE(EstimateFloorHeight(frame, Eigen::AlignedBox3d(), FloorOptions(), &floor_z).ok());
   EXPECT_NEAR(floor_z, 0.0, 0.01);
